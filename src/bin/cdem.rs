@@ -1,0 +1,88 @@
+//! The `cdem` command line. The only place errors become text and exit codes.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+use indicatif::{ProgressBar, ProgressStyle};
+
+use cdem::scene::Scene;
+
+#[derive(Parser)]
+#[command(name = "cdem", version, about = "Continuum-discontinuum element method for jointed rock slopes")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run a scene to equilibrium; write summary.json, history.csv and VTK frames.
+    Run {
+        scene: PathBuf,
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+    },
+    /// Regenerate a case's .msh from its .geo with gmsh (gmsh must be on PATH).
+    Mesh {
+        geo: PathBuf,
+        /// Output mesh (default: the .geo's path with extension .msh).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+    /// Run every committed case and write DIR/report.md.
+    Reproduce {
+        #[arg(long, default_value = "reproduce")]
+        out: PathBuf,
+    },
+}
+
+fn progress_bar(max: usize) -> ProgressBar {
+    let pb = ProgressBar::new(max as u64);
+    pb.set_style(ProgressStyle::with_template("{spinner} step {pos} {msg} [{elapsed_precise}]").expect("valid template"));
+    pb
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Run { scene, out } => run(&scene, &out),
+        Command::Mesh { geo, out } => {
+            let out = out.unwrap_or_else(|| geo.with_extension("msh"));
+            cdem::mesh::gmsh::regenerate(&geo, &out).map(|_| eprintln!("wrote {}", out.display()))
+        }
+        Command::Reproduce { out } => cdem::reproduce::reproduce(&out, &mut |step, ratio| {
+            let _ = (step, ratio);
+        }),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn run(scene_path: &std::path::Path, out: &std::path::Path) -> cdem::Result<()> {
+    let scene = Scene::load(scene_path)?;
+    let pb = progress_bar(scene.solver.max_steps);
+    let result = cdem::run::run_scene(&scene, &mut |step, ratio| {
+        pb.set_position(step as u64);
+        pb.set_message(format!("unbalanced ratio {ratio:.2e}"));
+    })?;
+    pb.finish_and_clear();
+    cdem::run::write_outputs(&scene, &result, out)?;
+    let s = &result.summary;
+    println!(
+        "{} after {} steps ({:.2} s): ratio {:.2e}, min u_z {:.4e} m, min sigma_zz {} Pa -> {}",
+        if s.converged { "converged" } else { "NOT converged" },
+        s.steps,
+        s.wall_s,
+        s.unbalanced_ratio,
+        s.min_uz,
+        s.min_szz.map_or("-".into(), |v| format!("{v:.4e}")),
+        out.display()
+    );
+    Ok(())
+}

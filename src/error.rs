@@ -1,0 +1,97 @@
+//! Typed errors. Every variant says where: the file line, key, element, node or
+//! step. The CLI is the only place that turns them into text and an exit code.
+
+use std::path::PathBuf;
+
+/// Any error of the library.
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    #[error(transparent)]
+    Mesh(#[from] MeshError),
+    #[error(transparent)]
+    Scene(#[from] SceneError),
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    #[error(transparent)]
+    Solve(#[from] SolveError),
+    #[error("{path}: {source}")]
+    Io { path: PathBuf, source: std::io::Error },
+    #[error("gmsh: {0}")]
+    Gmsh(String),
+}
+
+impl Error {
+    pub fn io(path: impl Into<PathBuf>, source: std::io::Error) -> Self {
+        Error::Io { path: path.into(), source }
+    }
+}
+
+/// Errors reading or checking a mesh.
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum MeshError {
+    /// A syntax or structure error in an MSH file, with the line (ASCII) or
+    /// byte offset (binary) where it was found.
+    #[error("MSH parse error at {location}: {reason}")]
+    Parse { location: String, reason: String },
+    #[error("MSH format {version} is not supported (need 4.1)")]
+    UnsupportedVersion { version: String },
+    #[error("element {element}: gmsh element type {gmsh_type} is not supported in a volume mesh")]
+    UnsupportedElement { element: u64, gmsh_type: i32 },
+    #[error("element {element}: refers to node {node}, which is not in $Nodes")]
+    UnknownNode { element: u64, node: u64 },
+    #[error("node {node}: duplicate tag")]
+    DuplicateNode { node: u64 },
+    #[error("node {node}: coordinate is not finite")]
+    NonFiniteNode { node: u64 },
+    #[error("element {element}: inverted (sub-tetrahedron {tet} has volume {volume:.3e} m^3)")]
+    Inverted { element: u64, tet: usize, volume: f64 },
+    #[error("element {element}: degenerate (sub-tetrahedron {tet} has volume {volume:.3e} m^3)")]
+    Degenerate { element: u64, tet: usize, volume: f64 },
+    #[error("the mesh has no volume elements")]
+    NoCells,
+    #[error("physical group {name:?} (dim {dim}) not found in the mesh")]
+    MissingGroup { name: String, dim: u8 },
+    #[error("face shared by more than two elements: elements {elements:?}")]
+    NonManifold { elements: Vec<u64> },
+}
+
+/// Errors in a scene file: always name the key.
+#[derive(Debug, thiserror::Error)]
+pub enum SceneError {
+    #[error("{path}: {message}")]
+    Syntax { path: PathBuf, message: String },
+    #[error("scene key `{key}`: {reason}")]
+    Invalid { key: String, reason: String },
+}
+
+impl SceneError {
+    pub fn invalid(key: impl Into<String>, reason: impl Into<String>) -> Self {
+        SceneError::Invalid { key: key.into(), reason: reason.into() }
+    }
+}
+
+/// Errors building the model from a mesh and a scene.
+#[derive(Debug, thiserror::Error)]
+pub enum ModelError {
+    #[error("element {element}: no material (its volume group is not given a [[material]])")]
+    NoMaterial { element: u64 },
+    #[error("node {node}: non-positive lumped mass {mass:.3e} kg")]
+    NonPositiveMass { node: usize, mass: f64 },
+    #[error("perturbation inverts element {element} (sub-tetrahedron {tet}, volume {volume:.3e} m^3); lower perturbation.ratio")]
+    PerturbationInverts { element: u64, tet: usize, volume: f64 },
+    #[error("scene key `{key}`: group {group:?} is not a {what} group of the mesh")]
+    UnknownGroup { key: String, group: String, what: String },
+}
+
+/// Errors of the time integration.
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum SolveError {
+    #[error("step {step}: non-finite state at node {node}")]
+    NonFinite { step: usize, node: usize },
+    #[error("step {step}: energy blow-up at node {node} (kinetic energy {kinetic:.3e} J > external work {work:.3e} J): unstable time step")]
+    Unstable { step: usize, node: usize, kinetic: f64, work: f64 },
+    #[error("the model has zero stiffness or zero mass: no stable time step")]
+    NoTimeStep,
+}
+
+pub type Result<T, E = Error> = std::result::Result<T, E>;

@@ -1,0 +1,277 @@
+//! Building a [`Model`] from a mesh and a scene, in named stages.
+
+use std::collections::HashMap;
+
+use super::{Elements, Interface, Model};
+use crate::error::{Error, ModelError};
+use crate::mesh::adjacency::{face_key, face_nodes, FaceAdjacency, FaceKey};
+use crate::mesh::perturb::perturb_nodes;
+use crate::mesh::shape::{cross, norm, sub};
+use crate::mesh::Mesh;
+use crate::physics::element::element_operators;
+use crate::physics::material::{Material, YoungPoisson};
+use crate::physics::spring::{spring_stiffness, Springs};
+use crate::scene::{Axis, JointMode, Scene};
+
+/// Builds the model: 1. perturb nodes, 2. classify interfaces, 3. make node
+/// copies (merging across merged interfaces), 4. element operators and masses,
+/// 5. springs on the other interfaces, 6. constraints, 7. gravity.
+pub fn build(mesh: &Mesh, scene: &Scene) -> Result<Model, Error> {
+    let adj = FaceAdjacency::build(mesh)?;
+    let coords = perturbed_coordinates(mesh, scene, &adj)?;
+    let (interfaces, face_interface) = classify_interfaces(mesh, scene)?;
+    let interface_of = |key: &FaceKey| face_interface.get(key).copied().unwrap_or(0);
+
+    // 3. Node copies: one per (cell, corner) slot, merged across merged faces.
+    let mut slot_offset = Vec::with_capacity(mesh.cells.len() + 1);
+    slot_offset.push(0);
+    for c in &mesh.cells {
+        slot_offset.push(slot_offset.last().unwrap() + c.kind.n_nodes());
+    }
+    let mut uf = UnionFind::new(*slot_offset.last().unwrap());
+    let slot = |c: usize, mesh_node: usize| {
+        let k = mesh.cells[c].corners().iter().position(|&n| n == mesh_node).expect("face node is a cell corner");
+        slot_offset[c] + k
+    };
+    for s in &adj.shared {
+        let nodes = face_nodes(mesh, s.cells[0], s.faces[0]);
+        if interfaces[interface_of(&face_key(&nodes))].mode == JointMode::Merged {
+            for &n in &nodes {
+                uf.union(slot(s.cells[0], n), slot(s.cells[1], n));
+            }
+        }
+    }
+    let mut node_of_slot = vec![u32::MAX; uf.len()];
+    let mut root_node: HashMap<usize, u32> = HashMap::new();
+    let mut mesh_node = Vec::new();
+    for (c, cell) in mesh.cells.iter().enumerate() {
+        for (k, &n) in cell.corners().iter().enumerate() {
+            let s = slot_offset[c] + k;
+            let next = root_node.len() as u32;
+            let id = *root_node.entry(uf.find(s)).or_insert(next);
+            if id == next {
+                mesh_node.push(n as u32);
+            }
+            node_of_slot[s] = id;
+        }
+    }
+    let n_nodes = mesh_node.len();
+    let x0: Vec<[f64; 3]> = mesh_node.iter().map(|&n| coords[n as usize]).collect();
+
+    // 4. Elements.
+    let materials_of_cell = cell_materials(mesh, scene)?;
+    let materials: Vec<Material> = scene
+        .material
+        .iter()
+        .map(|m| Material {
+            lame: YoungPoisson { young: m.youngs_modulus, poisson: m.poisson_ratio }.into(),
+            density: m.density,
+        })
+        .collect();
+    let mut el = Elements::default();
+    let mut mass = vec![0.0; n_nodes];
+    el.offset.push(0);
+    for (c, cell) in mesh.cells.iter().enumerate() {
+        let corners: Vec<[f64; 3]> = cell.corners().iter().map(|&n| coords[n]).collect();
+        let mat = materials_of_cell[c];
+        let op = element_operators(cell.kind, &corners, &materials[mat as usize])
+            .map_err(|d| Error::Mesh(d.into_mesh_error(cell.tag)))?;
+        let ids: Vec<u32> = (0..cell.kind.n_nodes()).map(|k| node_of_slot[slot_offset[c] + k]).collect();
+        for (k, &id) in ids.iter().enumerate() {
+            mass[id as usize] += op.mass[k];
+        }
+        el.kind.push(cell.kind);
+        el.nodes.extend_from_slice(&ids);
+        el.offset.push(el.nodes.len());
+        el.k_offset.push(el.k.len());
+        el.k.extend_from_slice(&op.k);
+        el.grad.extend_from_slice(&op.grad);
+        el.material.push(mat);
+        el.volume.push(op.volume);
+        el.tag.push(cell.tag);
+    }
+    if let Some((i, &m)) = mass.iter().enumerate().find(|(_, &m)| !(m > 0.0)) {
+        return Err(ModelError::NonPositiveMass { node: i, mass: m }.into());
+    }
+
+    // 5. Springs on every shared face that is not merged.
+    let springs = make_springs(mesh, scene, &adj, &coords, &interfaces, &face_interface, |c, n| node_of_slot[slot(c, n)]);
+
+    // 6. Constraints.
+    let mut copies: Vec<Vec<u32>> = vec![Vec::new(); mesh.nodes.len()];
+    for (i, &n) in mesh_node.iter().enumerate() {
+        copies[n as usize].push(i as u32);
+    }
+    let mut fixed = vec![false; 3 * n_nodes];
+    for (b, bc) in scene.boundary.iter().enumerate() {
+        let g = mesh
+            .groups
+            .iter()
+            .find(|g| g.name == bc.group && g.dim < 3)
+            .ok_or_else(|| unknown_group(format!("boundary[{b}].group"), &bc.group, "surface"))?;
+        for n in mesh.group_nodes(g) {
+            for &i in &copies[n] {
+                for axis in &bc.fix {
+                    let d = match axis {
+                        Axis::X => 0,
+                        Axis::Y => 1,
+                        Axis::Z => 2,
+                    };
+                    fixed[3 * i as usize + d] = true;
+                }
+            }
+        }
+    }
+
+    // 7. Gravity.
+    let g = scene.loads.gravity;
+    let f_ext = (0..3 * n_nodes).map(|k| mass[k / 3] * g[k % 3]).collect();
+
+    Ok(Model { x0, mesh_node, mass, fixed, f_ext, elements: el, springs, materials, interfaces, mesh_coords: coords })
+}
+
+fn unknown_group(key: String, group: &str, what: &str) -> Error {
+    ModelError::UnknownGroup { key, group: group.to_string(), what: what.to_string() }.into()
+}
+
+fn perturbed_coordinates(mesh: &Mesh, scene: &Scene, adj: &FaceAdjacency) -> Result<Vec<[f64; 3]>, Error> {
+    let p = &scene.perturbation;
+    let mut flat = Vec::new();
+    for (i, name) in p.keep_flat.iter().enumerate() {
+        let g = mesh
+            .groups
+            .iter()
+            .find(|g| &g.name == name && g.dim == 2)
+            .ok_or_else(|| unknown_group(format!("perturbation.keep_flat[{i}]"), name, "surface"))?;
+        flat.push(g);
+    }
+    perturb_nodes(mesh, adj, p.ratio, p.seed, &flat).map_err(|(c, d)| {
+        let (tet, volume) = match d {
+            crate::mesh::shape::CellDefect::Inverted { tet, volume } => (tet, volume),
+            crate::mesh::shape::CellDefect::Degenerate { tet, volume } => (tet, volume),
+        };
+        ModelError::PerturbationInverts { element: mesh.cells[c].tag, tet, volume }.into()
+    })
+}
+
+/// Interface 0 is `[joints]`; each `[[interface]]` maps its facets' keys to its index.
+fn classify_interfaces(mesh: &Mesh, scene: &Scene) -> Result<(Vec<Interface>, HashMap<FaceKey, usize>), Error> {
+    let mut interfaces = vec![Interface { name: "joints".into(), mode: scene.joints.mode, strength: None }];
+    let mut map = HashMap::new();
+    for (i, s) in scene.interface.iter().enumerate() {
+        let g = mesh
+            .groups
+            .iter()
+            .find(|g| g.name == s.group && g.dim == 2)
+            .ok_or_else(|| unknown_group(format!("interface[{i}].group"), &s.group, "surface"))?;
+        for f in &g.facets {
+            map.insert(face_key(f.nodes()), i + 1);
+        }
+        interfaces.push(Interface { name: s.group.clone(), mode: s.mode, strength: None });
+    }
+    Ok((interfaces, map))
+}
+
+fn cell_materials(mesh: &Mesh, scene: &Scene) -> Result<Vec<u16>, Error> {
+    let mut mat = vec![u16::MAX; mesh.cells.len()];
+    for (i, m) in scene.material.iter().enumerate() {
+        let g = mesh
+            .groups
+            .iter()
+            .find(|g| g.name == m.group && g.dim == 3)
+            .ok_or_else(|| unknown_group(format!("material[{i}].group"), &m.group, "volume"))?;
+        for &c in &g.cells {
+            mat[c] = i as u16;
+        }
+    }
+    if let Some(c) = mat.iter().position(|&m| m == u16::MAX) {
+        return Err(ModelError::NoMaterial { element: mesh.cells[c].tag }.into());
+    }
+    Ok(mat)
+}
+
+/// One spring per coincident node pair of every non-merged shared face. The
+/// node's area is half of each face triangle `(a, next, F)` and `(prev, a, F)`
+/// (`F` the face centroid); its normal is their area-weighted normal, out of
+/// the first cell.
+fn make_springs(
+    mesh: &Mesh,
+    scene: &Scene,
+    adj: &FaceAdjacency,
+    coords: &[[f64; 3]],
+    interfaces: &[Interface],
+    face_interface: &HashMap<FaceKey, usize>,
+    node_of: impl Fn(usize, usize) -> u32,
+) -> Springs {
+    let mut sp = Springs::default();
+    for s in &adj.shared {
+        let nodes = face_nodes(mesh, s.cells[0], s.faces[0]);
+        let iface = face_interface.get(&face_key(&nodes)).copied().unwrap_or(0);
+        if interfaces[iface].mode == JointMode::Merged {
+            continue;
+        }
+        let (e_j, g_j, l) = joint_moduli(scene, iface);
+        let p: Vec<[f64; 3]> = nodes.iter().map(|&n| coords[n]).collect();
+        let m = p.len() as f64;
+        let f = [0, 1, 2].map(|d| p.iter().map(|x| x[d]).sum::<f64>() / m);
+        for k in 0..p.len() {
+            let (prev, a, next) = (p[(k + p.len() - 1) % p.len()], p[k], p[(k + 1) % p.len()]);
+            let t1 = cross(sub(next, a), sub(f, a)); // 2 x area vector of (a, next, F)
+            let t2 = cross(sub(a, prev), sub(f, prev)); // 2 x area vector of (prev, a, F)
+            let area = 0.25 * (norm(t1) + norm(t2));
+            let nsum = [t1[0] + t2[0], t1[1] + t2[1], t1[2] + t2[2]];
+            let nlen = norm(nsum);
+            let (a_id, b_id) = (node_of(s.cells[0], nodes[k]), node_of(s.cells[1], nodes[k]));
+            if a_id == b_id || nlen == 0.0 {
+                continue; // already joined through a merged interface
+            }
+            let (kn, ks) = spring_stiffness(e_j, g_j, area, l);
+            sp.a.push(a_id);
+            sp.b.push(b_id);
+            sp.normal.push(nsum.map(|v| v / nlen));
+            sp.area.push(area);
+            sp.kn.push(kn);
+            sp.ks.push(ks);
+            sp.interface.push(iface as u16);
+        }
+    }
+    sp
+}
+
+/// `(E_j, G_j, L)` of an interface, falling back to `[joints]` (validated).
+fn joint_moduli(scene: &Scene, iface: usize) -> (f64, f64, f64) {
+    let j = &scene.joints;
+    let (e, g, l) = match iface {
+        0 => (j.normal_modulus, j.shear_modulus, j.thickness),
+        i => {
+            let s = &scene.interface[i - 1];
+            (s.normal_modulus.or(j.normal_modulus), s.shear_modulus.or(j.shear_modulus), s.thickness.or(j.thickness))
+        }
+    };
+    (e.unwrap_or(f64::NAN), g.unwrap_or(f64::NAN), l.unwrap_or(f64::NAN))
+}
+
+/// Disjoint sets with path halving; the smaller index becomes the root so
+/// numbering is deterministic.
+struct UnionFind(Vec<usize>);
+
+impl UnionFind {
+    fn new(n: usize) -> Self {
+        Self((0..n).collect())
+    }
+    fn len(&self) -> usize {
+        self.0.len()
+    }
+    fn find(&mut self, mut x: usize) -> usize {
+        while self.0[x] != x {
+            self.0[x] = self.0[self.0[x]];
+            x = self.0[x];
+        }
+        x
+    }
+    fn union(&mut self, a: usize, b: usize) {
+        let (ra, rb) = (self.find(a), self.find(b));
+        let (lo, hi) = (ra.min(rb), ra.max(rb));
+        self.0[hi] = lo;
+    }
+}

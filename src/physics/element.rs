@@ -1,0 +1,140 @@
+//! The deformable element (paper section 3.3 (1), eq. 12).
+//!
+//! A cell is a polyhedron of constant-strain tetrahedra (see
+//! [`crate::mesh::shape`]). Its decomposition points (face and body centroids)
+//! are fixed averages of the corners, `x_p = sum_c T_pc x_c`, so each tetrahedron
+//! `t` contributes, for every corner `c`, the gradient
+//! `g_tc = sum_k T_(p_k) c grad N_k` of its linear shape functions. With
+//! `grad u = sum_c u_c (x) g_c` the condensed stiffness block of corners `c, d` is
+//!
+//! `K_cd = sum_t V_t (lambda g_c g_d^T + mu (g_c . g_d) I + mu g_d g_c^T)`,
+//!
+//! i.e. `K_e = T^T (sum_t K_t) T`. The lumped mass puts `rho V_t / 4` on each
+//! tetrahedron point and maps it to the corners through `T^T`. The element
+//! stress (volume average over its tetrahedra) is linear in the gradients, so
+//! it is the stress of the volume-averaged gradients `g_c = sum_t V_t g_tc / V`.
+
+use crate::mesh::shape::{check_cell, sub, CellDefect, CellKind, Decomposition};
+use crate::physics::material::{Lame, Material};
+
+/// What the solver needs of one element, built once.
+#[derive(Debug, Clone)]
+pub struct ElementOperators {
+    /// Condensed stiffness, `3n x 3n` row-major, dof `3c + i` (N/m).
+    pub k: Vec<f64>,
+    /// Volume-averaged corner gradients (1/m), for the element stress.
+    pub grad: Vec<[f64; 3]>,
+    /// Lumped mass of each corner (kg).
+    pub mass: Vec<f64>,
+    /// Element volume (m^3).
+    pub volume: f64,
+}
+
+/// Gradients of the four linear shape functions of a tetrahedron and its volume.
+pub fn tet_gradients(x: [[f64; 3]; 4]) -> ([[f64; 3]; 4], f64) {
+    let a = sub(x[1], x[0]);
+    let b = sub(x[2], x[0]);
+    let c = sub(x[3], x[0]);
+    // Rows of J^-1 (J has columns a, b, c) are the cross products over det.
+    let det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+    let inv = 1.0 / det;
+    let g1 = crate::mesh::shape::cross(b, c).map(|v| v * inv);
+    let g2 = crate::mesh::shape::cross(c, a).map(|v| v * inv);
+    let g3 = crate::mesh::shape::cross(a, b).map(|v| v * inv);
+    let g0 = [-(g1[0] + g2[0] + g3[0]), -(g1[1] + g2[1] + g3[1]), -(g1[2] + g2[2] + g3[2])];
+    ([g0, g1, g2, g3], det / 6.0)
+}
+
+/// Builds the element operators of a cell from its corner positions.
+pub fn element_operators(kind: CellKind, corners: &[[f64; 3]], material: &Material) -> Result<ElementOperators, CellDefect> {
+    let volume = check_cell(kind, corners)?;
+    let dec = Decomposition::of(kind);
+    let n = dec.n_corners;
+    let points = dec.points(corners);
+    let Lame { lambda, mu } = material.lame;
+    let mut k = vec![0.0; 9 * n * n];
+    let mut grad = vec![[0.0; 3]; n];
+    let mut point_mass = vec![0.0; points.len()];
+    let mut g = vec![[0.0; 3]; n];
+    for tet in &dec.tets {
+        let (gn, vt) = tet_gradients([points[tet[0]], points[tet[1]], points[tet[2]], points[tet[3]]]);
+        for gc in g.iter_mut() {
+            *gc = [0.0; 3];
+        }
+        for (kk, &p) in tet.iter().enumerate() {
+            point_mass[p] += 0.25 * material.density * vt;
+            for (c, gc) in g.iter_mut().enumerate() {
+                let w = dec.weights[p][c];
+                if w != 0.0 {
+                    for i in 0..3 {
+                        gc[i] += w * gn[kk][i];
+                    }
+                }
+            }
+        }
+        for c in 0..n {
+            for i in 0..3 {
+                grad[c][i] += vt * g[c][i] / volume;
+            }
+            for d in 0..n {
+                let gcgd = g[c][0] * g[d][0] + g[c][1] * g[d][1] + g[c][2] * g[d][2];
+                for i in 0..3 {
+                    let row = (3 * c + i) * 3 * n + 3 * d;
+                    for j in 0..3 {
+                        let iso = if i == j { mu * gcgd } else { 0.0 };
+                        k[row + j] += vt * (lambda * g[c][i] * g[d][j] + iso + mu * g[d][i] * g[c][j]);
+                    }
+                }
+            }
+        }
+    }
+    let mass = (0..n).map(|c| (0..points.len()).map(|p| dec.weights[p][c] * point_mass[p]).sum()).collect();
+    Ok(ElementOperators { k, grad, mass, volume })
+}
+
+/// Eq. 12: the deformation force of one element, `f_e = K_e u_e`, added into
+/// the global internal force `f` (3 per node). `nodes` maps corners to nodes.
+#[inline]
+pub fn element_force(k: &[f64], nodes: &[u32], u: &[f64], f: &mut [f64]) {
+    let n = 3 * nodes.len();
+    let mut ue = [0.0; 24];
+    for (c, &node) in nodes.iter().enumerate() {
+        let b = 3 * node as usize;
+        ue[3 * c..3 * c + 3].copy_from_slice(&u[b..b + 3]);
+    }
+    for (c, &node) in nodes.iter().enumerate() {
+        let b = 3 * node as usize;
+        for i in 0..3 {
+            let row = &k[(3 * c + i) * n..(3 * c + i + 1) * n];
+            let mut s = 0.0;
+            for (kij, uj) in row.iter().zip(&ue[..n]) {
+                s += kij * uj;
+            }
+            f[b + i] += s;
+        }
+    }
+}
+
+/// Element stress (Pa, Voigt order xx yy zz yz xz xy) from its averaged
+/// gradients and the corner displacements.
+pub fn element_stress(grad: &[[f64; 3]], nodes: &[u32], u: &[f64], lame: Lame) -> [f64; 6] {
+    let mut h = [[0.0; 3]; 3]; // displacement gradient du_i/dx_j
+    for (c, &node) in nodes.iter().enumerate() {
+        let b = 3 * node as usize;
+        for i in 0..3 {
+            for j in 0..3 {
+                h[i][j] += u[b + i] * grad[c][j];
+            }
+        }
+    }
+    let tr = h[0][0] + h[1][1] + h[2][2];
+    let Lame { lambda, mu } = lame;
+    [
+        lambda * tr + 2.0 * mu * h[0][0],
+        lambda * tr + 2.0 * mu * h[1][1],
+        lambda * tr + 2.0 * mu * h[2][2],
+        mu * (h[1][2] + h[2][1]),
+        mu * (h[0][2] + h[2][0]),
+        mu * (h[0][1] + h[1][0]),
+    ]
+}

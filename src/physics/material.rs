@@ -1,0 +1,36 @@
+//! Linear-elastic isotropic material: `sigma = lambda tr(eps) I + 2 G eps`.
+
+/// Young's modulus (Pa) and Poisson's ratio, as a user gives them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct YoungPoisson {
+    pub young: f64,
+    pub poisson: f64,
+}
+
+/// Lamé parameters (Pa).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Lame {
+    pub lambda: f64,
+    pub mu: f64,
+}
+
+impl From<YoungPoisson> for Lame {
+    fn from(m: YoungPoisson) -> Self {
+        let (e, nu) = (m.young, m.poisson);
+        Lame { lambda: e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)), mu: e / (2.0 * (1.0 + nu)) }
+    }
+}
+
+impl Lame {
+    /// Constrained (P-wave) modulus `M = lambda + 2 mu`.
+    pub fn p_modulus(&self) -> f64 {
+        self.lambda + 2.0 * self.mu
+    }
+}
+
+/// An element material: elasticity and density (kg/m^3).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Material {
+    pub lame: Lame,
+    pub density: f64,
+}

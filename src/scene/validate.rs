@@ -1,0 +1,71 @@
+//! Semantic checks of a scene: each failure names its key.
+
+use super::{JointMode, Scene};
+use crate::error::SceneError;
+
+fn finite_positive(key: &str, v: f64) -> Result<(), SceneError> {
+    if v.is_finite() && v > 0.0 {
+        Ok(())
+    } else {
+        Err(SceneError::invalid(key, format!("must be a finite positive number, got {v}")))
+    }
+}
+
+fn stiffness_given(key: &str, e: Option<f64>, g: Option<f64>, l: Option<f64>) -> Result<(), SceneError> {
+    for (name, v) in [("normal_modulus", e), ("shear_modulus", g), ("thickness", l)] {
+        match v {
+            Some(v) => finite_positive(&format!("{key}.{name}"), v)?,
+            None => return Err(SceneError::invalid(format!("{key}.{name}"), "required for springs")),
+        }
+    }
+    Ok(())
+}
+
+pub(super) fn validate(s: &Scene) -> Result<(), SceneError> {
+    let p = &s.perturbation;
+    if !(p.ratio.is_finite() && (0.0..0.5).contains(&p.ratio)) {
+        return Err(SceneError::invalid("perturbation.ratio", format!("must be in [0, 0.5), got {}", p.ratio)));
+    }
+    if s.material.is_empty() {
+        return Err(SceneError::invalid("material", "at least one [[material]] is required"));
+    }
+    for (i, m) in s.material.iter().enumerate() {
+        let key = format!("material[{i}]");
+        finite_positive(&format!("{key}.youngs_modulus"), m.youngs_modulus)?;
+        finite_positive(&format!("{key}.density"), m.density)?;
+        if !(m.poisson_ratio.is_finite() && m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5) {
+            return Err(SceneError::invalid(
+                format!("{key}.poisson_ratio"),
+                format!("must be in (-1, 0.5), got {}", m.poisson_ratio),
+            ));
+        }
+    }
+    let j = &s.joints;
+    let any_springs = j.mode == JointMode::Springs || s.interface.iter().any(|i| i.mode == JointMode::Springs);
+    if j.mode == JointMode::Springs || (any_springs && (j.normal_modulus.is_some() || j.thickness.is_some())) {
+        stiffness_given("joints", j.normal_modulus, j.shear_modulus, j.thickness)?;
+    }
+    for (i, f) in s.interface.iter().enumerate() {
+        if f.mode == JointMode::Springs {
+            stiffness_given(
+                &format!("interface[{i}]"),
+                f.normal_modulus.or(j.normal_modulus),
+                f.shear_modulus.or(j.shear_modulus),
+                f.thickness.or(j.thickness),
+            )?;
+        }
+    }
+    for (i, b) in s.boundary.iter().enumerate() {
+        if b.fix.is_empty() {
+            return Err(SceneError::invalid(format!("boundary[{i}].fix"), "names no component"));
+        }
+    }
+    if s.loads.gravity.iter().any(|g| !g.is_finite()) {
+        return Err(SceneError::invalid("loads.gravity", "must be finite"));
+    }
+    s.solver.validate()?;
+    if s.output.history_every == 0 {
+        return Err(SceneError::invalid("output.history_every", "must be at least 1"));
+    }
+    Ok(())
+}

@@ -1,0 +1,74 @@
+//! All numerical settings of the solver, in one struct (scene key `[solver]`).
+
+use serde::Deserialize;
+
+use crate::error::SceneError;
+
+/// Damping used by dynamic relaxation (see [`crate::physics::damping`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum DampingKind {
+    /// Cundall's local non-viscous damping, factor `local_damping`.
+    Local,
+    /// Mass-proportional viscous damping at the adaptive critical value.
+    Viscous,
+    /// Kinetic damping: velocities zeroed at every kinetic-energy peak.
+    /// Plain resets (no displacement correction): it converges the column in
+    /// fewer steps than viscous damping, but on the perturbed slope it grows
+    /// slowly unstable after ~4000 steps (caught by the energy check).
+    Kinetic,
+}
+
+/// Dynamic-relaxation settings. Every field has a default.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SolverParams {
+    /// Time step as a fraction of the Gershgorin bound on the critical step
+    /// `2 / sqrt(max_i sum_j |K_ij| / m_i)`. Default 0.9; must be in (0, 1].
+    pub safety: f64,
+    /// Damping kind. Default `viscous` (adaptive critical): on the paper
+    /// slope it reaches 1e-5 in 25x fewer steps than local damping.
+    pub damping: DampingKind,
+    /// Local damping factor alpha. Default 0.8 (FLAC's).
+    pub local_damping: f64,
+    /// Scale nodal masses so that every node has the same critical step
+    /// (static problems only: the path to equilibrium is then fictitious).
+    /// Default true. Gravity always uses the physical mass.
+    pub mass_scaling: bool,
+    /// Convergence: `max |f_unbal| / max |f_ext|` below this. Default 1e-5.
+    pub tolerance: f64,
+    /// Stop (not converged) after this many steps. Default 1 000 000.
+    pub max_steps: usize,
+}
+
+impl Default for SolverParams {
+    fn default() -> Self {
+        Self {
+            safety: 0.9,
+            damping: DampingKind::Viscous,
+            local_damping: 0.8,
+            mass_scaling: true,
+            tolerance: 1e-5,
+            max_steps: 1_000_000,
+        }
+    }
+}
+
+impl SolverParams {
+    pub fn validate(&self) -> Result<(), SceneError> {
+        let bad = |k: &str, r: String| Err(SceneError::invalid(format!("solver.{k}"), r));
+        if !(self.safety > 0.0 && self.safety <= 1.0) {
+            return bad("safety", format!("must be in (0, 1], got {}", self.safety));
+        }
+        if !(self.local_damping >= 0.0 && self.local_damping < 1.0) {
+            return bad("local_damping", format!("must be in [0, 1), got {}", self.local_damping));
+        }
+        if !(self.tolerance > 0.0 && self.tolerance.is_finite()) {
+            return bad("tolerance", format!("must be a finite positive number, got {}", self.tolerance));
+        }
+        if self.max_steps == 0 {
+            return bad("max_steps", "must be at least 1".into());
+        }
+        Ok(())
+    }
+}
