@@ -8,6 +8,8 @@ use std::path::PathBuf;
 pub enum Error {
     #[error(transparent)]
     Mesh(#[from] MeshError),
+    #[error("{path}: {source}")]
+    MeshFile { path: PathBuf, source: MeshError },
     #[error(transparent)]
     Scene(#[from] SceneError),
     #[error(transparent)]

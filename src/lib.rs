@@ -18,6 +18,8 @@
 //! ```
 
 pub mod error;
+pub mod fem;
+pub mod lem;
 pub mod mesh;
 pub mod model;
 pub mod output;

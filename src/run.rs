@@ -44,18 +44,31 @@ pub struct Summary {
     pub springs: usize,
 }
 
+/// A displacement frame recorded during a run.
+pub struct Frame {
+    pub step: usize,
+    pub time: f64,
+    pub u: Vec<f64>,
+}
+
 /// Everything a run produced.
 pub struct RunResult {
     pub model: Model,
     pub state: State,
     pub report: RunReport,
     pub stress: Option<Vec<[f64; 6]>>,
+    /// Intermediate frames (`output.frame_every`); the final state is not among them.
+    pub frames: Vec<Frame>,
     pub summary: Summary,
 }
 
 /// Builds the model of a scene (mesh read and perturbed, springs made).
 pub fn build_model(scene: &Scene) -> Result<Model, Error> {
-    let mesh = read_msh(&scene.mesh_path())?;
+    let path = scene.mesh_path();
+    let mesh = read_msh(&path).map_err(|e| match e {
+        Error::Mesh(source) => Error::MeshFile { path, source },
+        other => other,
+    })?;
     model::build(&mesh, scene)
 }
 
@@ -65,10 +78,25 @@ pub fn run_scene(scene: &Scene, progress: &mut dyn FnMut(usize, f64)) -> Result<
     let model = build_model(scene)?;
     let mut solver = Solver::new(&model, scene.solver.clone())?;
     let mut state = State::new(&model);
-    let report = solver.relax(&model, &mut state, scene.output.history_every, progress)?;
+    let frame_every = if scene.output.vtk { scene.output.frame_every } else { 0 };
+    let mut frames = Vec::new();
+    let mut observe = |st: &State, ratio: f64| {
+        if st.step % 100 == 0 {
+            progress(st.step, ratio);
+        }
+        if frame_every > 0 && st.step % frame_every == 0 {
+            frames.push(Frame { step: st.step, time: st.time, u: st.u.clone() });
+        }
+    };
+    let every = if frame_every > 0 { gcd(frame_every, 100) } else { 100 };
+    let report = solver.relax(&model, &mut state, scene.output.history_every, every, &mut observe)?;
     let stress = scene.output.stress.then(|| model.element_stresses(&state.u));
     let summary = summarize(&model, &state, &report, stress.as_deref(), t0.elapsed().as_secs_f64());
-    Ok(RunResult { model, state, report, stress, summary })
+    Ok(RunResult { model, state, report, stress, frames, summary })
+}
+
+fn gcd(a: usize, b: usize) -> usize {
+    if b == 0 { a } else { gcd(b, a % b) }
 }
 
 pub fn summarize(model: &Model, state: &State, report: &RunReport, stress: Option<&[[f64; 6]]>, wall_s: f64) -> Summary {
@@ -99,15 +127,23 @@ pub fn summarize(model: &Model, state: &State, report: &RunReport, stress: Optio
     }
 }
 
-/// Writes `summary.json`, `history.csv` and (if asked) `frames/final.vtu` + `run.pvd`.
+/// Writes `summary.json`, `history.csv` and (if asked) the VTK frames
+/// (`step-NNNNNNNN.vtu`, `final.vtu`) with their collection `run.pvd`.
 pub fn write_outputs(scene: &Scene, result: &RunResult, out: &Path) -> Result<(), Error> {
     std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
     output::write_json(&out.join("summary.json"), &result.summary)?;
     output::write_history(&out.join("history.csv"), &result.report.history)?;
     if scene.output.vtk {
+        let mut pvd = Vec::new();
+        for f in &result.frames {
+            let name = format!("step-{:08}.vtu", f.step);
+            vtk::write_vtu(&out.join(&name), &result.model, &vtk::Frame { u: &f.u, stress: None })?;
+            pvd.push((f.time, name));
+        }
         let frame = vtk::Frame { u: &result.state.u, stress: result.stress.as_deref() };
         vtk::write_vtu(&out.join("final.vtu"), &result.model, &frame)?;
-        vtk::write_pvd(&out.join("run.pvd"), &[(result.state.time, "final.vtu".to_string())])?;
+        pvd.push((result.state.time, "final.vtu".to_string()));
+        vtk::write_pvd(&out.join("run.pvd"), &pvd)?;
     }
     Ok(())
 }

@@ -189,33 +189,36 @@ impl Solver {
     }
 
     /// Runs until the unbalanced-force ratio is below the tolerance or
-    /// `max_steps`. `progress(step, ratio)` is called every 100 steps;
-    /// `frame(state)` every `frame_every` steps (0: never).
+    /// `max_steps`, recording a history row every `history_every` steps.
+    /// `observe(state, ratio)` is called every `observe_every` steps (0: never)
+    /// for progress display and frames.
     pub fn relax(
         &mut self,
         model: &Model,
         state: &mut State,
         history_every: usize,
-        progress: &mut dyn FnMut(usize, f64),
+        observe_every: usize,
+        observe: &mut dyn FnMut(&State, f64),
     ) -> Result<RunReport, SolveError> {
         let mut history = Vec::new();
         let mut ratio = f64::INFINITY;
         let first = state.step;
+        let mut converged = false;
         while state.step - first < self.params.max_steps {
             let (unbalanced, kinetic) = self.step(model, state)?;
             ratio = self.ratio(unbalanced);
-            let done = ratio < self.params.tolerance;
-            if state.step % history_every == 0 || done {
+            converged = ratio < self.params.tolerance;
+            if state.step % history_every == 0 || converged {
                 history.push(self.history_row(model, state, kinetic, ratio));
             }
-            if state.step % 100 == 0 {
-                progress(state.step, ratio);
+            if observe_every > 0 && state.step % observe_every == 0 {
+                observe(state, ratio);
             }
-            if done {
-                return Ok(RunReport { converged: true, steps: state.step - first, dt: self.dt, unbalanced_ratio: ratio, history });
+            if converged {
+                break;
             }
         }
-        Ok(RunReport { converged: false, steps: state.step - first, dt: self.dt, unbalanced_ratio: ratio, history })
+        Ok(RunReport { converged, steps: state.step - first, dt: self.dt, unbalanced_ratio: ratio, history })
     }
 
     fn history_row(&self, model: &Model, state: &State, kinetic: f64, ratio: f64) -> HistoryRow {
