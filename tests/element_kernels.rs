@@ -114,7 +114,7 @@ fn patch_test_uniform_strain_is_exact_in_one_perturbed_element() {
             assert!((s[c] - expected[c]).abs() < 1e-10 * smax, "{kind:?} stress[{c}] {} vs {}", s[c], expected[c]);
         }
         let mut f = vec![0.0; u.len()];
-        element_force(&op.k, &nodes, &u, &mut f);
+        element_force(&op.k, &nodes, &u, &mut f); // one element: its slot is the global vector
         let energy = 0.5 * f.iter().zip(&u).map(|(a, b)| a * b).sum::<f64>();
         let exact = 0.5 * op.volume * (0..3).flat_map(|i| (0..3).map(move |j| (i, j))).map(|(i, j)| eps[i][j] * sig[i][j]).sum::<f64>();
         assert!((energy - exact).abs() < 1e-10 * exact, "{kind:?} energy {energy} vs {exact}");

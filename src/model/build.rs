@@ -2,7 +2,7 @@
 
 use std::collections::HashMap;
 
-use super::{Elements, Interface, Model};
+use super::{Elements, Gather, Interface, Model};
 use crate::error::{Error, ModelError};
 use crate::mesh::adjacency::{face_key, face_nodes, FaceAdjacency, FaceKey};
 use crate::mesh::perturb::perturb_nodes;
@@ -127,7 +127,8 @@ pub fn build(mesh: &Mesh, scene: &Scene) -> Result<Model, Error> {
     let g = scene.loads.gravity;
     let f_ext = (0..3 * n_nodes).map(|k| mass[k / 3] * g[k % 3]).collect();
 
-    Ok(Model { x0, mesh_node, mass, fixed, f_ext, elements: el, springs, materials, interfaces, mesh_coords: coords })
+    let gather = Gather::build(&el, &springs, n_nodes);
+    Ok(Model { x0, mesh_node, mass, fixed, f_ext, elements: el, springs, materials, interfaces, gather, mesh_coords: coords })
 }
 
 fn unknown_group(key: String, group: &str, what: &str) -> Error {

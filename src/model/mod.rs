@@ -56,6 +56,53 @@ pub struct Interface {
     pub strength: Option<Strength>,
 }
 
+/// Stride of an element's force slot in the solver's scratch (a hexahedron's
+/// 8 corners x 3; prisms and tetrahedra use the front of their slot).
+pub const ELEMENT_SLOT: usize = 24;
+
+/// Per-node gather lists (CSR): where each node finds its force contributions,
+/// in a fixed order, so that forces are summed without two threads writing
+/// one node and with the same result whatever the thread count.
+#[derive(Debug, Clone, Default)]
+pub struct Gather {
+    pub elem_ptr: Vec<u32>,
+    /// Offsets `ELEMENT_SLOT e + 3 c` of the element-force scratch.
+    pub elem_slot: Vec<u32>,
+    pub spring_ptr: Vec<u32>,
+    /// `2 s` if the node is the spring's `a` (gets `-F`), `2 s + 1` if `b` (`+F`).
+    pub spring_end: Vec<u32>,
+}
+
+impl Gather {
+    pub fn build(elements: &Elements, springs: &Springs, n_nodes: usize) -> Self {
+        let mut per_node: Vec<Vec<u32>> = vec![Vec::new(); n_nodes];
+        for e in 0..elements.len() {
+            for (c, &node) in elements.corners(e).iter().enumerate() {
+                per_node[node as usize].push((ELEMENT_SLOT * e + 3 * c) as u32);
+            }
+        }
+        let (elem_ptr, elem_slot) = csr(&per_node);
+        let mut per_node: Vec<Vec<u32>> = vec![Vec::new(); n_nodes];
+        for s in 0..springs.len() {
+            per_node[springs.a[s] as usize].push(2 * s as u32);
+            per_node[springs.b[s] as usize].push(2 * s as u32 + 1);
+        }
+        let (spring_ptr, spring_end) = csr(&per_node);
+        Self { elem_ptr, elem_slot, spring_ptr, spring_end }
+    }
+}
+
+fn csr(lists: &[Vec<u32>]) -> (Vec<u32>, Vec<u32>) {
+    let mut ptr = Vec::with_capacity(lists.len() + 1);
+    ptr.push(0);
+    let mut idx = Vec::new();
+    for l in lists {
+        idx.extend_from_slice(l);
+        ptr.push(idx.len() as u32);
+    }
+    (ptr, idx)
+}
+
 /// Everything that does not change during a run.
 #[derive(Debug, Clone)]
 pub struct Model {
@@ -73,6 +120,7 @@ pub struct Model {
     pub springs: Springs,
     pub materials: Vec<Material>,
     pub interfaces: Vec<Interface>,
+    pub gather: Gather,
     /// Perturbed mesh node coordinates (m).
     pub mesh_coords: Vec<[f64; 3]>,
 }

@@ -92,26 +92,19 @@ pub fn element_operators(kind: CellKind, corners: &[[f64; 3]], material: &Materi
     Ok(ElementOperators { k, grad, mass, volume })
 }
 
-/// Eq. 12: the deformation force of one element, `f_e = K_e u_e`, added into
-/// the global internal force `f` (3 per node). `nodes` maps corners to nodes.
+/// Eq. 12: the deformation force of one element, `f_e = K_e u_e`, written to
+/// the element's own slot `f_e` (`3n` values, corner-major). `nodes` maps
+/// corners to model nodes; `u` is the global displacement (3 per node).
 #[inline]
-pub fn element_force(k: &[f64], nodes: &[u32], u: &[f64], f: &mut [f64]) {
+pub fn element_force(k: &[f64], nodes: &[u32], u: &[f64], f_e: &mut [f64]) {
     let n = 3 * nodes.len();
-    let mut ue = [0.0; 24];
+    let mut u_e = [0.0; 24];
     for (c, &node) in nodes.iter().enumerate() {
         let b = 3 * node as usize;
-        ue[3 * c..3 * c + 3].copy_from_slice(&u[b..b + 3]);
+        u_e[3 * c..3 * c + 3].copy_from_slice(&u[b..b + 3]);
     }
-    for (c, &node) in nodes.iter().enumerate() {
-        let b = 3 * node as usize;
-        for i in 0..3 {
-            let row = &k[(3 * c + i) * n..(3 * c + i + 1) * n];
-            let mut s = 0.0;
-            for (kij, uj) in row.iter().zip(&ue[..n]) {
-                s += kij * uj;
-            }
-            f[b + i] += s;
-        }
+    for (row, f) in k.chunks_exact(n).zip(f_e.iter_mut()) {
+        *f = row.iter().zip(&u_e[..n]).map(|(k_ij, u_j)| k_ij * u_j).sum();
     }
 }
 

@@ -3,10 +3,10 @@
 //!
 //! | eq. | kernel |
 //! |-----|--------|
-//! | 12  | [`element::element_forces`]: deformation force `f = K_e u_e` |
+//! | 12  | [`element::element_force`]: deformation force `f = K_e u_e` |
 //! | 13  | [`damping`]: damping force (local / viscous) |
 //! | 14  | [`crate::solver::integrate`]: `a = (f_ext - f - f_d)/m`, `v += a dt`, `u += v dt` |
-//! | 15  | [`spring::spring_force`]: `F_n = K_n d_n`, `F_s = K_s (d_s - d_s^p)` |
+//! | 15  | [`spring::spring_force`] (per spring: [`spring::spring_contact_force`]): `F_n = K_n d_n`, `F_s = K_s (d_s - d_s^p)` |
 //! | 16  | [`spring::spring_stiffness`]: `K_n = E_j A / L`, `K_s = G_j A / L` |
 //! | 17  | [`spring::tension_cutoff`]: `F_n >= T A` -> `F_n = F_s = 0` |
 //! | 18  | [`spring::mohr_coulomb`]: `|F_s| > P tan(phi) + c A` -> `|F_s| = P tan(phi)` |

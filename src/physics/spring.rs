@@ -95,33 +95,35 @@ impl SpringState {
     }
 }
 
+/// Eq. 15 for one spring with its state: the force the spring exerts on
+/// node `a` (`F_n n + F_s`; node `b` gets the opposite). A broken joint that
+/// is open carries nothing: no tension and hence no friction.
 #[inline]
-fn relative_displacement(u: &[f64], a: usize, b: usize) -> [f64; 3] {
+pub fn spring_contact_force(kn: f64, ks: f64, n: [f64; 3], d: [f64; 3], slip: [f64; 3], status: SpringStatus) -> [f64; 3] {
+    let (f_n, f_s) = spring_force(kn, ks, n, d, slip);
+    if status != SpringStatus::Intact && f_n > 0.0 {
+        return [0.0; 3];
+    }
+    [0, 1, 2].map(|i| f_n * n[i] + f_s[i])
+}
+
+/// Relative displacement `u_b - u_a` of a spring.
+#[inline]
+pub fn relative_displacement(u: &[f64], a: usize, b: usize) -> [f64; 3] {
     [u[3 * b] - u[3 * a], u[3 * b + 1] - u[3 * a + 1], u[3 * b + 2] - u[3 * a + 2]]
 }
 
-#[inline]
-fn scatter(f: &mut [f64], a: usize, b: usize, fa: [f64; 3]) {
-    for i in 0..3 {
-        f[3 * a + i] -= fa[i];
-        f[3 * b + i] += fa[i];
-    }
-}
-
-/// Adds the elastic spring forces (eq. 15, no failure) to the internal force
-/// `f` (the force that resists deformation: `a` receives `-(F_n n + F_s)`).
+/// Adds the spring forces (eq. 15, no failure) to the internal force `f` (the
+/// force that resists deformation: `a` receives `-(F_n n + F_s)`, `b` the
+/// opposite). The sequential reference of the solver's gathered version.
 pub fn spring_forces(springs: &Springs, state: &SpringState, u: &[f64], f: &mut [f64]) {
     for s in 0..springs.len() {
         let (a, b) = (springs.a[s] as usize, springs.b[s] as usize);
-        let n = springs.normal[s];
         let d = relative_displacement(u, a, b);
-        let (mut f_n, mut f_s) = spring_force(springs.kn[s], springs.ks[s], n, d, state.slip[s]);
-        if state.status[s] != SpringStatus::Intact && f_n > 0.0 {
-            // A broken joint carries no tension (and so no shear) when open.
-            f_n = 0.0;
-            f_s = [0.0; 3];
+        let fa = spring_contact_force(springs.kn[s], springs.ks[s], springs.normal[s], d, state.slip[s], state.status[s]);
+        for i in 0..3 {
+            f[3 * a + i] -= fa[i];
+            f[3 * b + i] += fa[i];
         }
-        let fa = [0, 1, 2].map(|i| f_n * n[i] + f_s[i]);
-        scatter(f, a, b, fa);
     }
 }

@@ -5,6 +5,7 @@
 //! 2. update: damping (eq. 13) and explicit integration (eq. 14) with fixities;
 //! 3. monitor: convergence ratio, energies, non-finite state and blow-up.
 
+pub mod forces;
 pub mod integrate;
 pub mod params;
 pub mod timestep;
@@ -16,8 +17,8 @@ use serde::Serialize;
 use crate::error::SolveError;
 use crate::model::Model;
 use crate::physics::damping::rayleigh_omega2;
-use crate::physics::element::element_force;
-use crate::physics::spring::{spring_forces, SpringState};
+use crate::model::ELEMENT_SLOT;
+use crate::physics::spring::SpringState;
 use integrate::{integrate, UpdateInput};
 
 /// What changes during a run, in flat arrays indexed `3 i + d`.
@@ -78,6 +79,10 @@ pub struct Solver {
     f_ext_max: f64,
     viscous_c: f64,
     last_kinetic: f64,
+    /// Scratch: element forces, `ELEMENT_SLOT` per element.
+    f_elem: Vec<f64>,
+    /// Scratch: spring forces on their node `a`.
+    f_spring: Vec<[f64; 3]>,
 }
 
 impl Solver {
@@ -87,22 +92,29 @@ impl Solver {
         let (mass, dt) = timestep::masses_and_step(model, &rows, params.safety, params.mass_scaling, amplification)
             .ok_or(SolveError::NoTimeStep)?;
         let f_ext_max = model.f_ext.iter().zip(&model.fixed).filter(|(_, &fx)| !fx).map(|(f, _)| f.abs()).fold(0.0, f64::max);
-        Ok(Self { params, mass, dt, f_ext_max, viscous_c: 0.0, last_kinetic: 0.0 })
+        Ok(Self {
+            params,
+            mass,
+            dt,
+            f_ext_max,
+            viscous_c: 0.0,
+            last_kinetic: 0.0,
+            f_elem: vec![0.0; ELEMENT_SLOT * model.elements.len()],
+            f_spring: vec![[0.0; 3]; model.springs.len()],
+        })
     }
 
-    /// Stage 1: internal forces, eq. 12 (elements) and eq. 15 (springs).
-    pub fn internal_forces(model: &Model, state: &mut State) {
-        state.f_int.fill(0.0);
-        let el = &model.elements;
-        for e in 0..el.len() {
-            element_force(el.stiffness(e), el.corners(e), &state.u, &mut state.f_int);
-        }
-        spring_forces(&model.springs, &state.springs, &state.u, &mut state.f_int);
+    /// Stage 1: internal forces, eq. 12 (elements) and eq. 15 (springs),
+    /// gathered per node (see [`forces`]).
+    pub fn internal_forces(&mut self, model: &Model, state: &mut State) {
+        forces::element_forces(model, &state.u, &mut self.f_elem);
+        forces::spring_forces(model, &state.springs, &state.u, &mut self.f_spring);
+        forces::gather(model, &self.f_elem, &self.f_spring, &mut state.f_int);
     }
 
     /// One step. Returns `(max unbalanced force, kinetic energy)`.
     pub fn step(&mut self, model: &Model, state: &mut State) -> Result<(f64, f64), SolveError> {
-        Self::internal_forces(model, state);
+        self.internal_forces(model, state);
         self.update_damping(state);
         let inp = UpdateInput {
             mass: &self.mass,

@@ -1,0 +1,53 @@
+//! Stage 1 of a step, the internal forces, in three parallel passes:
+//! 1. every element writes `K_e u_e` (eq. 12) into its own slot;
+//! 2. every spring writes its force on node `a` (eq. 15) into its own slot;
+//! 3. every node gathers its contributions in the fixed order of
+//!    [`Gather`](crate::model::Gather).
+//! No two threads write the same value and every sum has a fixed order, so
+//! the result is bit for bit the same whatever the number of threads.
+
+use rayon::prelude::*;
+
+use crate::model::{Model, ELEMENT_SLOT};
+use crate::physics::element::element_force;
+use crate::physics::spring::{relative_displacement, spring_contact_force, SpringState};
+
+/// Smallest number of items a rayon task takes (keeps small models cheap).
+const MIN_LEN: usize = 256;
+
+pub fn element_forces(model: &Model, u: &[f64], f_elem: &mut [f64]) {
+    let el = &model.elements;
+    f_elem.par_chunks_mut(ELEMENT_SLOT).with_min_len(MIN_LEN / 4).enumerate().for_each(|(e, f_e)| {
+        let nodes = el.corners(e);
+        element_force(el.stiffness(e), nodes, u, &mut f_e[..3 * nodes.len()]);
+    });
+}
+
+pub fn spring_forces(model: &Model, state: &SpringState, u: &[f64], f_spring: &mut [[f64; 3]]) {
+    let sp = &model.springs;
+    f_spring.par_iter_mut().with_min_len(MIN_LEN).enumerate().for_each(|(s, f)| {
+        let d = relative_displacement(u, sp.a[s] as usize, sp.b[s] as usize);
+        *f = spring_contact_force(sp.kn[s], sp.ks[s], sp.normal[s], d, state.slip[s], state.status[s]);
+    });
+}
+
+pub fn gather(model: &Model, f_elem: &[f64], f_spring: &[[f64; 3]], f_int: &mut [f64]) {
+    let g = &model.gather;
+    f_int.par_chunks_mut(3).with_min_len(MIN_LEN).enumerate().for_each(|(i, f)| {
+        let mut sum = [0.0; 3];
+        for &slot in &g.elem_slot[g.elem_ptr[i] as usize..g.elem_ptr[i + 1] as usize] {
+            let slot = slot as usize;
+            for d in 0..3 {
+                sum[d] += f_elem[slot + d];
+            }
+        }
+        for &end in &g.spring_end[g.spring_ptr[i] as usize..g.spring_ptr[i + 1] as usize] {
+            let fs = f_spring[(end >> 1) as usize];
+            let sign = if end & 1 == 1 { 1.0 } else { -1.0 };
+            for d in 0..3 {
+                sum[d] += sign * fs[d];
+            }
+        }
+        f.copy_from_slice(&sum);
+    });
+}
