@@ -129,21 +129,46 @@ pub fn summarize(model: &Model, state: &State, report: &RunReport, stress: Optio
 
 /// Writes `summary.json`, `history.csv` and (if asked) the VTK frames
 /// (`step-NNNNNNNN.vtu`, `final.vtu`) with their collection `run.pvd`.
+/// Everything is written to a staging directory first and moved into `out`
+/// only when all of it is written: a failed run leaves nothing behind.
 pub fn write_outputs(scene: &Scene, result: &RunResult, out: &Path) -> Result<(), Error> {
-    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
-    output::write_json(&out.join("summary.json"), &result.summary)?;
-    output::write_history(&out.join("history.csv"), &result.report.history)?;
+    let staging = staging_dir(out);
+    let written = write_all(scene, result, &staging);
+    let moved = written.and_then(|files| {
+        std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
+        for f in files {
+            std::fs::rename(staging.join(&f), out.join(&f)).map_err(|e| Error::io(out.join(&f), e))?;
+        }
+        Ok(())
+    });
+    let _ = std::fs::remove_dir_all(&staging);
+    moved
+}
+
+/// A sibling of `out` named `.<name>.partial-<pid>`.
+pub fn staging_dir(out: &Path) -> std::path::PathBuf {
+    let name = out.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "out".into());
+    out.with_file_name(format!(".{name}.partial-{}", std::process::id()))
+}
+
+fn write_all(scene: &Scene, result: &RunResult, dir: &Path) -> Result<Vec<String>, Error> {
+    std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+    let mut files = vec!["summary.json".to_string(), "history.csv".to_string()];
+    output::write_json(&dir.join("summary.json"), &result.summary)?;
+    output::write_history(&dir.join("history.csv"), &result.report.history)?;
     if scene.output.vtk {
         let mut pvd = Vec::new();
         for f in &result.frames {
             let name = format!("step-{:08}.vtu", f.step);
-            vtk::write_vtu(&out.join(&name), &result.model, &vtk::Frame { u: &f.u, stress: None })?;
+            vtk::write_vtu(&dir.join(&name), &result.model, &vtk::Frame { u: &f.u, stress: None })?;
             pvd.push((f.time, name));
         }
         let frame = vtk::Frame { u: &result.state.u, stress: result.stress.as_deref() };
-        vtk::write_vtu(&out.join("final.vtu"), &result.model, &frame)?;
+        vtk::write_vtu(&dir.join("final.vtu"), &result.model, &frame)?;
         pvd.push((result.state.time, "final.vtu".to_string()));
-        vtk::write_pvd(&out.join("run.pvd"), &pvd)?;
+        vtk::write_pvd(&dir.join("run.pvd"), &pvd)?;
+        files.extend(pvd.into_iter().map(|(_, n)| n));
+        files.push("run.pvd".into());
     }
-    Ok(())
+    Ok(files)
 }

@@ -157,7 +157,8 @@ fn perturbed_coordinates(mesh: &Mesh, scene: &Scene, adj: &FaceAdjacency) -> Res
 
 /// Interface 0 is `[joints]`; each `[[interface]]` maps its facets' keys to its index.
 fn classify_interfaces(mesh: &Mesh, scene: &Scene) -> Result<(Vec<Interface>, HashMap<FaceKey, usize>), Error> {
-    let mut interfaces = vec![Interface { name: "joints".into(), mode: scene.joints.mode, strength: None }];
+    let mut interfaces =
+        vec![Interface { name: "joints".into(), mode: scene.joints.mode, strength: scene.joints.strength.map(Into::into) }];
     let mut map = HashMap::new();
     for (i, s) in scene.interface.iter().enumerate() {
         let g = mesh
@@ -168,7 +169,7 @@ fn classify_interfaces(mesh: &Mesh, scene: &Scene) -> Result<(Vec<Interface>, Ha
         for f in &g.facets {
             map.insert(face_key(f.nodes()), i + 1);
         }
-        interfaces.push(Interface { name: s.group.clone(), mode: s.mode, strength: None });
+        interfaces.push(Interface { name: s.group.clone(), mode: s.mode, strength: s.strength.map(Into::into) });
     }
     Ok((interfaces, map))
 }

@@ -107,6 +107,61 @@ pub fn spring_contact_force(kn: f64, ks: f64, n: [f64; 3], d: [f64; 3], slip: [f
     [0, 1, 2].map(|i| f_n * n[i] + f_s[i])
 }
 
+/// Eq. 15 with failure (eq. 17-18) for one breakable spring: returns the
+/// force on node `a` and updates the spring's plastic slip and status.
+///
+/// - intact: tension cut-off (eq. 17) breaks it (force zero now); else
+///   Mohr–Coulomb with cohesion (eq. 18): if exceeded, it slips, loses its
+///   cohesion and tensile strength (brittle) and keeps `P tan(phi)`;
+/// - broken (either way): open (`F_n > 0`) carries nothing and its shear
+///   reference follows the motion (it recloses with zero shear force);
+///   closed carries compression and at most `P tan(phi)` of friction.
+///
+/// Plastic slip is updated so that `K_s (d_s - d_s^p)` equals the returned
+/// shear force.
+#[inline]
+pub fn breakable_spring_force(
+    kn: f64,
+    ks: f64,
+    n: [f64; 3],
+    d: [f64; 3],
+    area: f64,
+    strength: &Strength,
+    slip: &mut [f64; 3],
+    status: &mut SpringStatus,
+) -> [f64; 3] {
+    let (f_n, f_s) = spring_force(kn, ks, n, d, *slip);
+    let cohesion = match *status {
+        SpringStatus::Intact => {
+            if tension_cutoff(f_n, strength.tensile, area) {
+                *status = SpringStatus::Tension;
+                *slip = [0, 1, 2].map(|i| slip[i] + f_s[i] / ks);
+                return [0.0; 3];
+            }
+            strength.cohesion
+        }
+        SpringStatus::Tension | SpringStatus::Shear => {
+            if f_n > 0.0 {
+                *slip = [0, 1, 2].map(|i| slip[i] + f_s[i] / ks);
+                return [0.0; 3];
+            }
+            0.0
+        }
+    };
+    let fs_abs = (f_s[0] * f_s[0] + f_s[1] * f_s[1] + f_s[2] * f_s[2]).sqrt();
+    let f_s = match mohr_coulomb(f_n, fs_abs, strength.tan_phi, cohesion, area) {
+        None => f_s,
+        Some(limit) => {
+            *status = SpringStatus::Shear;
+            let scale = limit / fs_abs;
+            let kept = f_s.map(|v| v * scale);
+            *slip = [0, 1, 2].map(|i| slip[i] + (f_s[i] - kept[i]) / ks);
+            kept
+        }
+    };
+    [0, 1, 2].map(|i| f_n * n[i] + f_s[i])
+}
+
 /// Relative displacement `u_b - u_a` of a spring.
 #[inline]
 pub fn relative_displacement(u: &[f64], a: usize, b: usize) -> [f64; 3] {

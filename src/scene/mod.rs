@@ -25,6 +25,8 @@
 //! [[interface]]                  # a surface group between elements
 //! group = "slip"
 //! mode = "springs"               # moduli default to [joints]'
+//! strength = { tensile = 0.0, cohesion = 16e3, friction_angle = 18.0 }
+//!                                # breakable (failure phase only): T, c (Pa), phi (deg)
 //!
 //! [[boundary]]
 //! group = "bottom"
@@ -123,6 +125,26 @@ pub struct Joints {
     pub shear_modulus: Option<f64>,
     /// Equivalent thickness `L` (m).
     pub thickness: Option<f64>,
+    /// Makes these joints breakable (eq. 17-18) in the failure phase.
+    pub strength: Option<StrengthSection>,
+}
+
+/// Strength of a breakable structural plane.
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StrengthSection {
+    /// Tensile strength `T` (Pa), eq. 17.
+    pub tensile: f64,
+    /// Cohesion `c` (Pa), eq. 18.
+    pub cohesion: f64,
+    /// Friction angle `phi` (degrees, in [0, 90)), eq. 18.
+    pub friction_angle: f64,
+}
+
+impl From<StrengthSection> for crate::physics::spring::Strength {
+    fn from(s: StrengthSection) -> Self {
+        Self { tensile: s.tensile, cohesion: s.cohesion, tan_phi: s.friction_angle.to_radians().tan() }
+    }
 }
 
 /// An interface group (a surface physical group lying between elements).
@@ -135,6 +157,8 @@ pub struct InterfaceSection {
     pub normal_modulus: Option<f64>,
     pub shear_modulus: Option<f64>,
     pub thickness: Option<f64>,
+    /// Makes this interface breakable (eq. 17-18) in the failure phase.
+    pub strength: Option<StrengthSection>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]

@@ -21,6 +21,19 @@ fn stiffness_given(key: &str, e: Option<f64>, g: Option<f64>, l: Option<f64>) ->
     Ok(())
 }
 
+fn strength(key: &str, st: &super::StrengthSection) -> Result<(), SceneError> {
+    for (name, v) in [("tensile", st.tensile), ("cohesion", st.cohesion)] {
+        if !(v.is_finite() && v >= 0.0) {
+            return Err(SceneError::invalid(format!("{key}.strength.{name}"), format!("must be finite and >= 0, got {v}")));
+        }
+    }
+    let phi = st.friction_angle;
+    if !(phi.is_finite() && (0.0..90.0).contains(&phi)) {
+        return Err(SceneError::invalid(format!("{key}.strength.friction_angle"), format!("must be in [0, 90) degrees, got {phi}")));
+    }
+    Ok(())
+}
+
 pub(super) fn validate(s: &Scene) -> Result<(), SceneError> {
     let p = &s.perturbation;
     if !(p.ratio.is_finite() && (0.0..0.5).contains(&p.ratio)) {
@@ -45,7 +58,19 @@ pub(super) fn validate(s: &Scene) -> Result<(), SceneError> {
     if j.mode == JointMode::Springs || (any_springs && (j.normal_modulus.is_some() || j.thickness.is_some())) {
         stiffness_given("joints", j.normal_modulus, j.shear_modulus, j.thickness)?;
     }
+    if let Some(st) = &j.strength {
+        strength("joints", st)?;
+        if j.mode == JointMode::Merged {
+            return Err(SceneError::invalid("joints.strength", "a merged interface has no springs to break"));
+        }
+    }
     for (i, f) in s.interface.iter().enumerate() {
+        if let Some(st) = &f.strength {
+            strength(&format!("interface[{i}]"), st)?;
+            if f.mode == JointMode::Merged {
+                return Err(SceneError::invalid(format!("interface[{i}].strength"), "a merged interface has no springs to break"));
+            }
+        }
         if f.mode == JointMode::Springs {
             stiffness_given(
                 &format!("interface[{i}]"),

@@ -10,7 +10,7 @@ use rayon::prelude::*;
 
 use crate::model::{Model, ELEMENT_SLOT};
 use crate::physics::element::element_force;
-use crate::physics::spring::{relative_displacement, spring_contact_force, SpringState};
+use crate::physics::spring::{breakable_spring_force, relative_displacement, spring_contact_force, SpringState};
 
 /// Smallest number of items a rayon task takes (keeps small models cheap).
 const MIN_LEN: usize = 256;
@@ -23,12 +23,32 @@ pub fn element_forces(model: &Model, u: &[f64], f_elem: &mut [f64]) {
     });
 }
 
+/// Elastic springs (phase 1, or no breakable interface): eq. 15 only.
 pub fn spring_forces(model: &Model, state: &SpringState, u: &[f64], f_spring: &mut [[f64; 3]]) {
     let sp = &model.springs;
     f_spring.par_iter_mut().with_min_len(MIN_LEN).enumerate().for_each(|(s, f)| {
         let d = relative_displacement(u, sp.a[s] as usize, sp.b[s] as usize);
         *f = spring_contact_force(sp.kn[s], sp.ks[s], sp.normal[s], d, state.slip[s], state.status[s]);
     });
+}
+
+/// Failure phase: springs of breakable interfaces also check eq. 17-18 and
+/// update their own slip and status; the others stay elastic.
+pub fn spring_forces_with_failure(model: &Model, state: &mut SpringState, u: &[f64], f_spring: &mut [[f64; 3]]) {
+    let sp = &model.springs;
+    f_spring
+        .par_iter_mut()
+        .zip(state.slip.par_iter_mut())
+        .zip(state.status.par_iter_mut())
+        .with_min_len(MIN_LEN)
+        .enumerate()
+        .for_each(|(s, ((f, slip), status))| {
+            let d = relative_displacement(u, sp.a[s] as usize, sp.b[s] as usize);
+            *f = match &model.interfaces[sp.interface[s] as usize].strength {
+                Some(st) => breakable_spring_force(sp.kn[s], sp.ks[s], sp.normal[s], d, sp.area[s], st, slip, status),
+                None => spring_contact_force(sp.kn[s], sp.ks[s], sp.normal[s], d, *slip, *status),
+            };
+        });
 }
 
 pub fn gather(model: &Model, f_elem: &[f64], f_spring: &[[f64; 3]], f_int: &mut [f64]) {

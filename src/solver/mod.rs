@@ -83,6 +83,9 @@ pub struct Solver {
     f_elem: Vec<f64>,
     /// Scratch: spring forces on their node `a`.
     f_spring: Vec<[f64; 3]>,
+    /// Failure phase on: breakable springs check eq. 17-18. Only true when
+    /// the model has a breakable interface.
+    failure: bool,
 }
 
 impl Solver {
@@ -101,14 +104,25 @@ impl Solver {
             last_kinetic: 0.0,
             f_elem: vec![0.0; ELEMENT_SLOT * model.elements.len()],
             f_spring: vec![[0.0; 3]; model.springs.len()],
+            failure: false,
         })
+    }
+
+    /// Turns the failure phase (phase 2) on or off. It stays off for a model
+    /// without breakable interfaces, which then does no failure work.
+    pub fn set_failure(&mut self, model: &Model, on: bool) {
+        self.failure = on && model.interfaces.iter().any(|i| i.strength.is_some());
     }
 
     /// Stage 1: internal forces, eq. 12 (elements) and eq. 15 (springs),
     /// gathered per node (see [`forces`]).
     pub fn internal_forces(&mut self, model: &Model, state: &mut State) {
         forces::element_forces(model, &state.u, &mut self.f_elem);
-        forces::spring_forces(model, &state.springs, &state.u, &mut self.f_spring);
+        if self.failure {
+            forces::spring_forces_with_failure(model, &mut state.springs, &state.u, &mut self.f_spring);
+        } else {
+            forces::spring_forces(model, &state.springs, &state.u, &mut self.f_spring);
+        }
         forces::gather(model, &self.f_elem, &self.f_spring, &mut state.f_int);
     }
 
