@@ -1,5 +1,6 @@
 //! Every committed case mesh is what its `.geo` makes: gmsh regenerates each
-//! `verification/cases/*/*.geo` into a temporary directory and the result must
+//! `verification/cases/*/*.geo` and `verification/extreme/*.geo` (every
+//! `.geo` with a committed `.msh` beside it) into a temporary directory and the result must
 //! equal the committed `.msh` (connectivity, tags and groups exactly, node
 //! coordinates within 1e-9 of the model size). Without gmsh on PATH the test
 //! is skipped with a note, except in CI (`CI=true`), where gmsh must run.
@@ -11,10 +12,13 @@ use cdem::mesh::gmsh::{gmsh_available, mesh_drift, read_msh, regenerate};
 use cdem::Error;
 
 fn case_geos() -> Vec<PathBuf> {
-    let cases = Path::new(env!("CARGO_MANIFEST_DIR")).join("verification/cases");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("verification");
+    let mut dirs = vec![root.join("extreme")];
+    for case in std::fs::read_dir(root.join("cases")).expect("verification/cases exists") {
+        dirs.push(case.expect("readable directory entry").path());
+    }
     let mut geos = Vec::new();
-    for case in std::fs::read_dir(&cases).expect("verification/cases exists") {
-        let dir = case.expect("readable directory entry").path();
+    for dir in dirs {
         for file in std::fs::read_dir(&dir).into_iter().flatten().flatten() {
             if file.path().extension().is_some_and(|e| e == "geo") {
                 geos.push(file.path());
