@@ -58,6 +58,21 @@ fn bad_values_name_their_key() {
 }
 
 #[test]
+fn joint_strengths_are_checked_and_named() {
+    let springs = GOOD.replace(
+        "mode = \"merged\"",
+        "mode = \"springs\"\nnormal_modulus = 1e10\nshear_modulus = 4e9\nthickness = 1.0\nstrength = { tensile = 0.0, cohesion = 16e3, friction_angle = 18.0 }",
+    );
+    parse(&springs).unwrap();
+    assert_eq!(invalid_key(&springs.replace("friction_angle = 18.0", "friction_angle = 90.0")), "joints.strength.friction_angle");
+    assert_eq!(invalid_key(&springs.replace("friction_angle = 18.0", "friction_angle = -1.0")), "joints.strength.friction_angle");
+    assert_eq!(invalid_key(&springs.replace("cohesion = 16e3", "cohesion = -1.0")), "joints.strength.cohesion");
+    assert_eq!(invalid_key(&springs.replace("tensile = 0.0", "tensile = nan")), "joints.strength.tensile");
+    let iface = format!("{springs}\n[[interface]]\ngroup = \"top\"\nstrength = {{ tensile = 0.0, cohesion = -5.0, friction_angle = 30.0 }}\n");
+    assert_eq!(invalid_key(&iface), "interface[0].strength.cohesion");
+}
+
+#[test]
 fn a_group_the_mesh_lacks_is_named_with_its_key() {
     let scene = parse(&GOOD.replace("group = \"bottom\"", "group = \"floor\"")).unwrap();
     match cdem::run::build_model(&scene) {
