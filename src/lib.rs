@@ -17,6 +17,7 @@
 //! # Ok::<(), cdem::Error>(())
 //! ```
 
+pub mod analysis;
 pub mod error;
 pub mod fem;
 pub mod lem;
