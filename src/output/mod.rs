@@ -2,6 +2,8 @@
 //! Every file is written to a temporary name and renamed, so a failed run
 //! leaves no half-written file behind.
 
+pub mod figures;
+pub mod section;
 pub mod vtk;
 
 use std::io::Write;
