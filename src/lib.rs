@@ -25,6 +25,7 @@ pub mod mesh;
 pub mod model;
 pub mod output;
 pub mod physics;
+pub mod progressive;
 pub mod reproduce;
 pub mod run;
 pub mod scene;

@@ -70,6 +70,8 @@ pub struct Scene {
     pub solver: SolverParams,
     #[serde(default)]
     pub output: Output,
+    /// Phase 2 (progressive failure), if present.
+    pub failure: Option<crate::progressive::FailureParams>,
     /// Directory of the scene file: relative paths are resolved against it.
     #[serde(skip)]
     pub base_dir: PathBuf,

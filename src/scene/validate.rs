@@ -89,6 +89,9 @@ pub(super) fn validate(s: &Scene) -> Result<(), SceneError> {
         return Err(SceneError::invalid("loads.gravity", "must be finite"));
     }
     s.solver.validate()?;
+    if let Some(f) = &s.failure {
+        f.validate()?;
+    }
     if s.output.history_every == 0 {
         return Err(SceneError::invalid("output.history_every", "must be at least 1"));
     }

@@ -1,0 +1,74 @@
+//! Physical-time runs obey Coulomb friction (references/column.md, "Rigid
+//! block on a plane" in shared/references.md): a block on a plane inclined at
+//! theta with friction angle phi and no cohesion stays at rest if theta < phi
+//! and otherwise slides with acceleration g (sin theta - cos theta tan phi).
+//!
+//! The plane is horizontal and gravity is tilted by theta. Phase 1 relaxes
+//! the bonded block to equilibrium; then, from rest, the contact is
+//! frictional (failure on) and time runs with physical masses and no damping.
+
+use std::path::Path;
+
+use cdem::scene::Scene;
+use cdem::solver::{DampingKind, Solver, State};
+
+const G: f64 = 9.81;
+const PHI_DEG: f64 = 20.0;
+
+/// Mean x displacement of the block's nodes after `t_end` seconds of sliding.
+fn slide(theta_deg: f64, t_end: f64) -> (f64, f64) {
+    let mut scene = Scene::load(Path::new("tests/fixtures/block-on-plane.toml")).unwrap();
+    let th = theta_deg.to_radians();
+    scene.loads.gravity = [G * th.sin(), 0.0, -G * th.cos()];
+    let model = cdem::run::build_model(&scene).unwrap();
+    // Phase 1: bonded, static.
+    let mut solver = Solver::new(&model, scene.solver.clone()).unwrap();
+    let mut state = State::new(&model);
+    let rep = solver.relax(&model, &mut state, 100, 0, &mut |_, _| {}).unwrap();
+    assert!(rep.converged);
+    // Phase 2: physical time, frictional contact, undamped.
+    let mut params = scene.solver.clone();
+    params.mass_scaling = false;
+    params.damping = DampingKind::Local;
+    params.local_damping = 0.0;
+    let mut dynamic = Solver::new(&model, params).unwrap();
+    dynamic.set_failure(&model, true);
+    state.v.fill(0.0);
+    let u0 = state.u.clone();
+    let block: Vec<usize> = (0..model.n_nodes()).filter(|&i| model.x0[i][2] > 1.0 + 1e-9 || (model.x0[i][2] > 1.0 - 1e-9 && is_block_copy(&model, i))).collect();
+    let steps = (t_end / dynamic.dt).round() as usize;
+    for _ in 0..steps {
+        dynamic.step(&model, &mut state).unwrap();
+    }
+    let t = steps as f64 * dynamic.dt;
+    let x = block.iter().map(|&i| state.u[3 * i] - u0[3 * i]).sum::<f64>() / block.len() as f64;
+    (x, t)
+}
+
+/// Node copies at z = 1 belong to the block if their element is the upper one.
+fn is_block_copy(model: &cdem::model::Model, node: usize) -> bool {
+    (0..model.elements.len()).any(|e| {
+        let c = model.elements.corners(e);
+        c.contains(&(node as u32)) && c.iter().map(|&i| model.x0[i as usize][2]).sum::<f64>() / c.len() as f64 > 1.0
+    })
+}
+
+#[test]
+fn block_below_the_friction_angle_stays_at_rest() {
+    let (x, t) = slide(15.0, 0.5);
+    println!("theta 15 deg, phi 20 deg: block moved {x:.3e} m in {t:.3} s");
+    // At rest: only elastic wobble. The static shear-spring displacement is
+    // W sin(theta) / K_s = 24525 N x 0.259 / 4e9 N/m = 1.6e-6 m; sliding at
+    // even 1 % of g would move 0.5 x 0.098 x 0.25 = 1.2e-2 m.
+    assert!(x.abs() < 1e-5, "block moved {x} m");
+}
+
+#[test]
+fn block_above_the_friction_angle_slides_with_the_coulomb_acceleration() {
+    let (th, phi) = (30f64.to_radians(), PHI_DEG.to_radians());
+    let analytic = G * (th.sin() - th.cos() * phi.tan());
+    let (x, t) = slide(30.0, 0.5);
+    let a = 2.0 * x / (t * t);
+    println!("theta 30 deg, phi 20 deg: a = {a:.4} m/s^2 (analytic {analytic:.4})");
+    assert!(((a - analytic) / analytic).abs() < 0.02, "a = {a}, analytic {analytic}");
+}
