@@ -94,6 +94,20 @@ pub enum SolveError {
     Unstable { step: usize, node: usize, kinetic: f64, work: f64 },
     #[error("the model has zero stiffness or zero mass: no stable time step")]
     NoTimeStep,
+    /// Implicit FEM: the fixities leave a rigid-body motion free.
+    #[error("the model is under-constrained: the [[boundary]] groups leave the rigid-body motion {motion} free; fix more components")]
+    UnderConstrained { motion: String },
+    /// Implicit FEM: Cholesky met a non-positive pivot although no rigid-body
+    /// motion of the whole model is free.
+    #[error("the stiffness matrix ({dofs} free components) is not positive definite (non-positive pivot {pivot} in the solver's fill-reducing order): the model is under-constrained, e.g. a part of the mesh held by no [[boundary]] group or a mechanism")]
+    NotPositiveDefinite { dofs: usize, pivot: usize },
+    /// Implicit FEM: an element's isoparametric map is inverted or degenerate.
+    #[error("element {element}: Jacobian determinant {det:.3e} <= 0 at Gauss point {point} (inverted or degenerate element)")]
+    NonPositiveJacobian { element: u64, point: usize, det: f64 },
+    /// Implicit FEM: the sparse matrix could not be built or factorised for a
+    /// non-numerical reason (index overflow, out of memory).
+    #[error("sparse factorisation failed: {reason}")]
+    Factorization { reason: String },
 }
 
 pub type Result<T, E = Error> = std::result::Result<T, E>;

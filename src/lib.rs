@@ -30,5 +30,6 @@ pub mod reproduce;
 pub mod run;
 pub mod scene;
 pub mod solver;
+pub mod study;
 
 pub use error::{Error, MeshError, ModelError, Result, SceneError, SolveError};

@@ -2,6 +2,7 @@
 //! surface (paper eq. 19-22, DESIGN.md section 4) and the sign segments of the
 //! per-point factors K_i.
 
+pub mod compare;
 pub mod safety;
 
 pub use safety::{safety_factors, sign_segments, traction_from_stress, SafetyFactors, Segment, SurfacePoint};

@@ -30,6 +30,24 @@ enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
     },
+    /// Solve the scene with the implicit FEM reference (continuous mesh); write summary.json and VTK.
+    Fem {
+        scene: PathBuf,
+        #[arg(long, default_value = "out-fem")]
+        out: PathBuf,
+    },
+    /// Limit-equilibrium slope stability (2D circular search): print a table, write JSON.
+    Lem {
+        input: PathBuf,
+        /// Output JSON (default: the input's path with extension .json).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+    /// Error against run time for CDEM and FEM (column, slope): DIR/study.csv and figures.
+    Study {
+        #[arg(long, default_value = "study")]
+        out: PathBuf,
+    },
     /// Run every committed case and write DIR/report.md.
     Reproduce {
         #[arg(long, default_value = "reproduce")]
@@ -51,6 +69,11 @@ fn main() -> ExitCode {
             let out = out.unwrap_or_else(|| geo.with_extension("msh"));
             cdem::mesh::gmsh::regenerate(&geo, &out).map(|_| eprintln!("wrote {}", out.display()))
         }
+        Command::Fem { scene, out } => fem(&scene, &out),
+        Command::Lem { input, out } => cdem::lem::run_file(&input, out.as_deref()).map(|_| ()),
+        Command::Study { out } => cdem::study::run_study(&out, &mut |what| eprintln!("study: {what}")).map(|rows| {
+            eprintln!("study: {} points -> {}", rows.len(), out.join("study.csv").display());
+        }),
         Command::Reproduce { out } => cdem::reproduce::reproduce(&out, &mut |step, ratio| {
             let _ = (step, ratio);
         }),
@@ -78,6 +101,23 @@ fn run(scene_path: &std::path::Path, out: &std::path::Path) -> cdem::Result<()> 
         "{} after {} steps ({:.2} s): ratio {:.2e}, min u_z {:.4e} m, min sigma_zz {} Pa -> {}",
         if s.converged { "converged" } else { "NOT converged" },
         s.steps,
+        s.wall_s,
+        s.unbalanced_ratio,
+        s.min_uz,
+        s.min_szz.map_or("-".into(), |v| format!("{v:.4e}")),
+        out.display()
+    );
+    Ok(())
+}
+
+fn fem(scene_path: &std::path::Path, out: &std::path::Path) -> cdem::Result<()> {
+    let scene = Scene::load(scene_path)?;
+    let sol = cdem::fem::solve_scene(&scene)?;
+    cdem::fem::write_outputs(&sol, out)?;
+    let s = &sol.summary;
+    println!(
+        "FEM solved {} unknowns ({:.2} s): residual {:.2e}, min u_z {:.4e} m, min sigma_zz {} Pa -> {}",
+        sol.free_dofs,
         s.wall_s,
         s.unbalanced_ratio,
         s.min_uz,

@@ -86,6 +86,7 @@ pub fn line_plot(path: &Path, title: &str, x_label: &str, y_label: &str, series:
             }
             chart
                 .configure_series_labels()
+                .position(SeriesLabelPosition::UpperLeft)
                 .background_style(WHITE.mix(0.8))
                 .border_style(BLACK)
                 .label_font(("sans-serif", 15))

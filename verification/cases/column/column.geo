@@ -18,7 +18,11 @@ Transfinite Surface{1};
 Recombine Surface{1};
 
 // out[0] top, out[1] volume, out[2..5] sides along curves 1..4.
-out[] = Extrude {0, 0, 40} { Surface{1}; Layers{10}; Recombine; };
+// `layers` (default 10) is set by the study meshes in verification/study/.
+If (!Exists(layers))
+  layers = 10;
+EndIf
+out[] = Extrude {0, 0, 40} { Surface{1}; Layers{layers}; Recombine; };
 
 Physical Volume("rock") = {out[1]};
 Physical Surface("bottom") = {1};

@@ -31,9 +31,14 @@ Line(8) = {8, 1};   // left side
 Line(9) = {2, 7};   // A | B
 Line(10) = {7, 4};  // B | C
 
-Transfinite Curve{1, 7, 8, 9, 3} = 11;   // 10 divisions
-Transfinite Curve{2, 10, 5} = 31;        // 30 divisions
-Transfinite Curve{4, 6} = 21;            // 20 divisions
+// `refine` scales the divisions (1: the 2 m mesh; the study meshes in
+// verification/study/ set it before including this file).
+If (!Exists(refine))
+  refine = 1;
+EndIf
+Transfinite Curve{1, 7, 8, 9, 3} = 10 * refine + 1;   // 10 divisions at refine 1
+Transfinite Curve{2, 10, 5} = 30 * refine + 1;        // 30 divisions
+Transfinite Curve{4, 6} = 20 * refine + 1;            // 20 divisions
 
 // Loops run clockwise in (x, z), so the surface normals point to +y, the
 // direction of the extrusion. (gmsh orients extruded hexahedra positively

@@ -1,0 +1,137 @@
+//! The FEM problem of a scene: the continuous mesh (shared nodes, every
+//! interface merged, no springs), perturbed exactly as CDEM perturbs it,
+//! materials per cell, fixed components and gravity.
+
+use crate::error::{Error, ModelError};
+use crate::mesh::adjacency::FaceAdjacency;
+use crate::mesh::perturb::perturb_nodes;
+use crate::mesh::shape::CellDefect;
+use crate::mesh::{Cell, Mesh};
+use crate::physics::material::{Material, YoungPoisson};
+use crate::scene::{Axis, Scene};
+
+/// A linear elastostatic problem on a continuous mesh.
+#[derive(Debug, Clone)]
+pub struct FemProblem {
+    /// Node coordinates (m), perturbed as the scene asks.
+    pub coords: Vec<[f64; 3]>,
+    /// Volume cells (gmsh order), referring to `coords`.
+    pub cells: Vec<Cell>,
+    /// Material index of each cell into `materials`.
+    pub cell_material: Vec<u16>,
+    pub materials: Vec<Material>,
+    /// Gravitational acceleration (m/s^2); the body force is `rho g`.
+    pub gravity: [f64; 3],
+    /// Fixed components, `3 node + axis`.
+    pub fixed: Vec<bool>,
+    /// Prescribed displacement of the fixed components (m), `3 node + axis`;
+    /// zero for a scene (its boundaries only fix).
+    pub prescribed: Vec<f64>,
+}
+
+impl FemProblem {
+    /// Reads the scene's mesh and builds the problem.
+    pub fn from_scene(scene: &Scene) -> Result<Self, Error> {
+        let mesh = crate::mesh::gmsh::read_msh(&scene.mesh_path())?;
+        Self::from_mesh(&mesh, scene)
+    }
+
+    /// Builds the problem of a scene on a given mesh: 1. perturb the nodes
+    /// (same call, seed and flat groups as `model::build`, so the coordinates
+    /// are CDEM's bit for bit), 2. materials, 3. fixities.
+    pub fn from_mesh(mesh: &Mesh, scene: &Scene) -> Result<Self, Error> {
+        let adj = FaceAdjacency::build(mesh)?;
+        let coords = perturbed_coordinates(mesh, scene, &adj)?;
+        let cell_material = cell_materials(mesh, scene)?;
+        let materials = scene
+            .material
+            .iter()
+            .map(|m| Material {
+                lame: YoungPoisson { young: m.youngs_modulus, poisson: m.poisson_ratio }.into(),
+                density: m.density,
+            })
+            .collect();
+        let mut fixed = vec![false; 3 * mesh.nodes.len()];
+        for (b, bc) in scene.boundary.iter().enumerate() {
+            let g = mesh
+                .groups
+                .iter()
+                .find(|g| g.name == bc.group && g.dim < 3)
+                .ok_or_else(|| unknown_group(format!("boundary[{b}].group"), &bc.group, "surface"))?;
+            for n in mesh.group_nodes(g) {
+                for axis in &bc.fix {
+                    fixed[3 * n + axis_index(*axis)] = true;
+                }
+            }
+        }
+        Ok(Self {
+            prescribed: vec![0.0; fixed.len()],
+            coords,
+            cells: mesh.cells.clone(),
+            cell_material,
+            materials,
+            gravity: scene.loads.gravity,
+            fixed,
+        })
+    }
+
+    pub fn n_nodes(&self) -> usize {
+        self.coords.len()
+    }
+
+    /// Corner coordinates of cell `c`.
+    pub fn cell_coords(&self, c: usize) -> Vec<[f64; 3]> {
+        self.cells[c].corners().iter().map(|&n| self.coords[n]).collect()
+    }
+}
+
+fn axis_index(a: Axis) -> usize {
+    match a {
+        Axis::X => 0,
+        Axis::Y => 1,
+        Axis::Z => 2,
+    }
+}
+
+fn unknown_group(key: String, group: &str, what: &str) -> Error {
+    ModelError::UnknownGroup { key, group: group.to_string(), what: what.to_string() }.into()
+}
+
+/// The scene's node perturbation, exactly as `model::build` applies it.
+fn perturbed_coordinates(mesh: &Mesh, scene: &Scene, adj: &FaceAdjacency) -> Result<Vec<[f64; 3]>, Error> {
+    let p = &scene.perturbation;
+    let mut flat = Vec::new();
+    for (i, name) in p.keep_flat.iter().enumerate() {
+        let g = mesh
+            .groups
+            .iter()
+            .find(|g| &g.name == name && g.dim == 2)
+            .ok_or_else(|| unknown_group(format!("perturbation.keep_flat[{i}]"), name, "surface"))?;
+        flat.push(g);
+    }
+    perturb_nodes(mesh, adj, p.ratio, p.seed, &flat).map_err(|(c, d)| {
+        let (tet, volume) = match d {
+            CellDefect::Inverted { tet, volume } | CellDefect::Degenerate { tet, volume } => (tet, volume),
+        };
+        ModelError::PerturbationInverts { element: mesh.cells[c].tag, tet, volume }.into()
+    })
+}
+
+/// Material index of every cell from the scene's `[[material]]` volume groups.
+fn cell_materials(mesh: &Mesh, scene: &Scene) -> Result<Vec<u16>, Error> {
+    let mut mat = vec![u16::MAX; mesh.cells.len()];
+    for (i, m) in scene.material.iter().enumerate() {
+        let g = mesh
+            .groups
+            .iter()
+            .find(|g| g.name == m.group && g.dim == 3)
+            .ok_or_else(|| unknown_group(format!("material[{i}].group"), &m.group, "volume"))?;
+        for &c in &g.cells {
+            mat[c] = i as u16;
+        }
+    }
+    if let Some(c) = mat.iter().position(|&m| m == u16::MAX) {
+        return Err(ModelError::NoMaterial { element: mesh.cells[c].tag }.into());
+    }
+    Ok(mat)
+}

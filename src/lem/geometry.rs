@@ -1,0 +1,326 @@
+//! Circle-ground intersection and slices (internal frame: the section faces
+//! -x, so the exit is the left crossing and the entry the right one).
+//!
+//! Lower arc `z_arc(x) = zc - sqrt(r^2 - u^2)`, `u = x - xc`. Slice `[x0, x1]`:
+//! `beta = asin(u / r)` at its ends, base inclination `alpha = (beta0 + beta1)/2`
+//! (`sin(alpha) > 0` under the crest side: driving), base length
+//! `l = r (beta1 - beta0)` (exact arc length), area
+//! `A = int z_ground dx - [zc (x1 - x0) - (S(u1) - S(u0))]` with
+//! `S(u) = (u sqrt(r^2 - u^2) + r^2 asin(u / r)) / 2` (exact for a polyline
+//! ground). Weight `W = gamma A` in a homogeneous section; with zones, the
+//! centre-line column `W = b sum(gamma_k h_k)`.
+
+use super::section::{polyline_z, Frame, LowerBound};
+use super::{Circle, LemSection};
+
+/// Why a trial circle is not an admissible slip surface.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+pub enum Reject {
+    #[error("radius or centre is not finite and positive")]
+    Degenerate,
+    #[error("the lower arc does not reach the ground")]
+    Misses,
+    #[error("the arc ends under the ground (centre too low, or it leaves the section through a side)")]
+    OpenArc,
+    #[error("the lower arc cuts the ground in {0} points, not 2")]
+    Crossings(usize),
+    #[error("the arc passes below the lower bound")]
+    BelowLowerBound,
+    #[error("sliver: the sliding mass is thinner than the minimum depth or narrower than the minimum width")]
+    Sliver,
+    #[error("the mass would slide toward the crest (driving moment <= 0)")]
+    WrongDirection,
+    #[error("part of the sliding mass lies in no material")]
+    NoMaterial,
+}
+
+/// Minimum size of a sliding mass (m): the deepest slice's mean height and
+/// the entry-exit width. The search's defaults are `0.02 H` and `0.1 H`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Limits {
+    pub min_depth: f64,
+    pub min_width: f64,
+}
+
+impl Limits {
+    pub const NONE: Limits = Limits { min_depth: 0.0, min_width: 0.0 };
+}
+
+/// Slice data, struct-of-arrays, reused from circle to circle.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Slices {
+    pub w: Vec<f64>,
+    pub sin_a: Vec<f64>,
+    pub cos_a: Vec<f64>,
+    pub l: Vec<f64>,
+    pub c: Vec<f64>,
+    pub tan_phi: Vec<f64>,
+    /// Scratch: z of zone-edge crossings in one column.
+    column: Vec<f64>,
+    /// `sum W sin(alpha)` (N/m).
+    pub drive: f64,
+    pub x_exit: f64,
+    pub x_entry: f64,
+}
+
+impl Slices {
+    pub fn with_capacity(n: usize) -> Self {
+        let v = || Vec::with_capacity(n);
+        Slices { w: v(), sin_a: v(), cos_a: v(), l: v(), c: v(), tan_phi: v(), column: Vec::with_capacity(16), ..Default::default() }
+    }
+
+    pub fn len(&self) -> usize {
+        self.w.len()
+    }
+
+    fn clear(&mut self) {
+        for v in [&mut self.w, &mut self.sin_a, &mut self.cos_a, &mut self.l, &mut self.c, &mut self.tan_phi] {
+            v.clear();
+        }
+    }
+}
+
+#[inline]
+fn z_arc(c: Circle, x: f64) -> f64 {
+    let u = x - c.xc;
+    c.zc - (c.r * c.r - u * u).max(0.0).sqrt()
+}
+
+/// The exit and entry x of the lower arc on the ground (internal frame).
+pub(crate) fn cut(f: &Frame, c: Circle) -> Result<(f64, f64), Reject> {
+    if !(c.r > 0.0 && c.r.is_finite() && c.xc.is_finite() && c.zc.is_finite()) {
+        return Err(Reject::Degenerate);
+    }
+    let g = &f.ground;
+    let (gx0, gx1) = (g[0][0], g[g.len() - 1][0]);
+    let (lo, hi) = (gx0.max(c.xc - c.r), gx1.min(c.xc + c.r));
+    if lo >= hi {
+        return Err(Reject::Misses);
+    }
+    if polyline_z(g, lo) >= z_arc(c, lo) || polyline_z(g, hi) >= z_arc(c, hi) {
+        return Err(Reject::OpenArc);
+    }
+    let mut xs = [0.0f64; 2];
+    let mut count = 0usize;
+    let last = g.len() - 2;
+    for k in 0..=last {
+        let (a, b) = (g[k], g[k + 1]);
+        if b[0] < lo || a[0] > hi {
+            continue;
+        }
+        let d = [b[0] - a[0], b[1] - a[1]];
+        let e = [a[0] - c.xc, a[1] - c.zc];
+        let qa = d[0] * d[0] + d[1] * d[1];
+        let qb = 2.0 * (e[0] * d[0] + e[1] * d[1]);
+        let qc = e[0] * e[0] + e[1] * e[1] - c.r * c.r;
+        let disc = qb * qb - 4.0 * qa * qc;
+        if disc < 0.0 {
+            continue;
+        }
+        let s = disc.sqrt();
+        for t in [(-qb - s) / (2.0 * qa), (-qb + s) / (2.0 * qa)] {
+            let in_segment = t >= 0.0 && (t < 1.0 || (k == last && t <= 1.0));
+            if in_segment && a[1] + t * d[1] < c.zc {
+                if count < 2 {
+                    xs[count] = a[0] + t * d[0];
+                }
+                count += 1;
+            }
+        }
+    }
+    match count {
+        0 => Err(Reject::Misses),
+        2 => Ok((xs[0].min(xs[1]), xs[0].max(xs[1]))),
+        n => Err(Reject::Crossings(n)),
+    }
+}
+
+/// Is the arc between x0 and x1 on or above the lower bound?
+fn above_lower_bound(f: &Frame, c: Circle, x0: f64, x1: f64) -> bool {
+    let tol = 1e-9 * (1.0 + c.r + c.zc.abs());
+    match &f.lower {
+        LowerBound::Level(z) => {
+            let lowest = if (x0..=x1).contains(&c.xc) { c.zc - c.r } else { z_arc(c, x0).min(z_arc(c, x1)) };
+            lowest >= z - tol
+        }
+        LowerBound::Polyline(p) => {
+            // z_arc minus a linear piece is convex: its minimum is at an end
+            // or where the arc's slope u / sqrt(r^2 - u^2) equals the piece's.
+            let ok = |x: f64| z_arc(c, x) >= polyline_z(p, x) - tol;
+            if !ok(x0) || !ok(x1) {
+                return false;
+            }
+            for k in 0..p.len() - 1 {
+                let (a, b) = (p[k], p[k + 1]);
+                if b[0] < x0 || a[0] > x1 {
+                    continue;
+                }
+                if (x0..=x1).contains(&a[0]) && !ok(a[0]) {
+                    return false;
+                }
+                let s = (b[1] - a[1]) / (b[0] - a[0]);
+                let x = c.xc + s * c.r / (1.0 + s * s).sqrt();
+                if x >= a[0].max(x0) && x <= b[0].min(x1) && !ok(x) {
+                    return false;
+                }
+            }
+            true
+        }
+    }
+}
+
+/// Integral of the ground over `[x0, x1]`; `k` is a segment hint that only moves right.
+fn ground_integral(g: &[[f64; 2]], x0: f64, x1: f64, k: &mut usize) -> f64 {
+    while *k + 2 < g.len() && g[*k + 1][0] <= x0 {
+        *k += 1;
+    }
+    let lerp = |k: usize, x: f64| {
+        let (a, b) = (g[k], g[k + 1]);
+        a[1] + (b[1] - a[1]) * (x - a[0]) / (b[0] - a[0])
+    };
+    let (mut sum, mut a, mut j) = (0.0, x0, *k);
+    loop {
+        let b = if j + 2 < g.len() { x1.min(g[j + 1][0]) } else { x1 };
+        sum += 0.5 * (lerp(j, a) + lerp(j, b)) * (b - a);
+        if b >= x1 {
+            return sum;
+        }
+        a = b;
+        j += 1;
+    }
+}
+
+/// `S(u) = int sqrt(r^2 - u^2) du`.
+#[inline]
+fn sector(u: f64, r: f64) -> f64 {
+    let s = (u / r).clamp(-1.0, 1.0);
+    0.5 * (u * (r * r - u * u).max(0.0).sqrt() + r * r * s.asin())
+}
+
+/// Cuts the circle (internal frame) into `n` slices, filling `s`.
+pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut Slices) -> Result<(), Reject> {
+    let (xx, xe) = cut(f, c)?;
+    if !above_lower_bound(f, c, xx, xe) {
+        return Err(Reject::BelowLowerBound);
+    }
+    if xe - xx < lim.min_width {
+        return Err(Reject::Sliver);
+    }
+    s.clear();
+    s.x_exit = xx;
+    s.x_entry = xe;
+    let g = &f.ground;
+    let homogeneous = f.homogeneous();
+    let b = (xe - xx) / n as f64;
+    let eps_z = 1e-9 * f.height();
+    let (mut k, mut max_h, mut drive) = (0usize, 0.0f64, 0.0);
+    let mut x0 = xx;
+    let (mut beta0, mut s0) = (((x0 - c.xc) / c.r).clamp(-1.0, 1.0).asin(), sector(x0 - c.xc, c.r));
+    for i in 0..n {
+        let x1 = if i + 1 == n { xe } else { xx + (i + 1) as f64 * b };
+        let u1 = x1 - c.xc;
+        let (beta1, s1) = ((u1 / c.r).clamp(-1.0, 1.0).asin(), sector(u1, c.r));
+        let alpha = 0.5 * (beta0 + beta1);
+        let (sin_a, cos_a) = alpha.sin_cos();
+        let area = (ground_integral(g, x0, x1, &mut k) - (c.zc * (x1 - x0) - (s1 - s0))).max(0.0);
+        let base = [c.xc + c.r * sin_a, c.zc - c.r * cos_a + eps_z];
+        let (w, strength) = match homogeneous {
+            Some(m) => (m.gamma * area, m),
+            None => {
+                let w = column_weight(f, c, 0.5 * (x0 + x1), &mut s.column).ok_or(Reject::NoMaterial)? * (x1 - x0);
+                (w, f.strength_at(base).ok_or(Reject::NoMaterial)?)
+            }
+        };
+        max_h = max_h.max(area / (x1 - x0));
+        drive += w * sin_a;
+        s.w.push(w);
+        s.sin_a.push(sin_a);
+        s.cos_a.push(cos_a);
+        s.l.push(c.r * (beta1 - beta0));
+        s.c.push(strength.c);
+        s.tan_phi.push(strength.tan_phi);
+        (x0, beta0, s0) = (x1, beta1, s1);
+    }
+    if max_h < lim.min_depth {
+        return Err(Reject::Sliver);
+    }
+    if drive <= 0.0 {
+        return Err(Reject::WrongDirection);
+    }
+    s.drive = drive;
+    Ok(())
+}
+
+/// `sum gamma_k h_k` on the vertical line x between the arc and the ground.
+fn column_weight(f: &Frame, c: Circle, x: f64, zs: &mut Vec<f64>) -> Option<f64> {
+    let (z0, z1) = (z_arc(c, x), polyline_z(&f.ground, x));
+    if z1 <= z0 {
+        return Some(0.0);
+    }
+    zs.clear();
+    zs.push(z0);
+    for (poly, _) in &f.zones {
+        let n = poly.len();
+        for i in 0..n {
+            let (a, b) = (poly[i], poly[(i + 1) % n]);
+            if (a[0] <= x) != (b[0] <= x) {
+                let z = a[1] + (b[1] - a[1]) * (x - a[0]) / (b[0] - a[0]);
+                if z > z0 && z < z1 {
+                    zs.push(z);
+                }
+            }
+        }
+    }
+    zs.push(z1);
+    zs.sort_unstable_by(f64::total_cmp);
+    let mut sum = 0.0;
+    for p in zs.windows(2) {
+        if p[1] > p[0] {
+            sum += f.strength_at([x, 0.5 * (p[0] + p[1])])?.gamma * (p[1] - p[0]);
+        }
+    }
+    Some(sum)
+}
+
+/// One slice as a person reads it (user frame).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct SliceInfo {
+    /// Left and right x of the slice (m).
+    pub x: [f64; 2],
+    /// Weight per metre run (N/m).
+    pub weight: f64,
+    /// Base inclination (rad), positive where the base descends in the
+    /// direction of sliding.
+    pub alpha: f64,
+    /// Base (arc) length (m).
+    pub base_length: f64,
+    pub cohesion: f64,
+    pub tan_phi: f64,
+}
+
+/// The slices of a circle (no minimum depth or width), in order of x.
+pub fn slices_of(section: &LemSection, circle: Circle, n: usize) -> Result<Vec<SliceInfo>, Reject> {
+    let f = &section.frame;
+    let c = Circle { xc: f.x(circle.xc), ..circle };
+    let mut s = Slices::with_capacity(n);
+    fill_slices(f, c, n.max(1), Limits::NONE, &mut s)?;
+    let b = (s.x_entry - s.x_exit) / s.len() as f64;
+    let mut v: Vec<SliceInfo> = (0..s.len())
+        .map(|i| {
+            let (x0, x1) = (s.x_exit + i as f64 * b, s.x_exit + (i + 1) as f64 * b);
+            let (xa, xb) = (f.x(x0), f.x(x1));
+            SliceInfo {
+                x: [xa.min(xb), xa.max(xb)],
+                weight: s.w[i],
+                alpha: s.sin_a[i].atan2(s.cos_a[i]),
+                base_length: s.l[i],
+                cohesion: s.c[i],
+                tan_phi: s.tan_phi[i],
+            }
+        })
+        .collect();
+    if f.mirrored {
+        v.reverse();
+    }
+    Ok(v)
+}

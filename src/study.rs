@@ -1,0 +1,242 @@
+//! Error against run time (issue: FEM reference): CDEM and the implicit FEM
+//! on the column and the slope, varying one factor at a time around a base
+//! point: mesh resolution (3), joint stiffness E_j (3), convergence
+//! tolerance (3). Writes `study.csv` and a log-log figure per case.
+//!
+//! Error measure: the relative L2 error of the displacement field,
+//! mass-weighted over nodes (see [`crate::analysis::compare`]):
+//! - column: against the analytic `u_z(z)` (references/column.md) at each node;
+//! - slope: against the FEM on the finest mesh (`slope-h05`, 0.5 m), sampled
+//!   at the coincident nodes (the transfinite meshes are nested). The study
+//!   meshes are not perturbed, so that they nest.
+
+use std::collections::HashMap;
+use std::fmt::Write;
+use std::path::Path;
+
+use serde::Serialize;
+
+use crate::error::Error;
+use crate::fem::{solve_scene, FemSolution};
+use crate::output::figures::{line_plot, Scale, Series};
+use crate::run::run_scene;
+use crate::scene::Scene;
+
+/// One point of the study.
+#[derive(Debug, Clone, Serialize)]
+pub struct StudyRow {
+    pub case: String,
+    pub method: String,
+    /// Which factor this row varies: "resolution", "stiffness", "tolerance" or "base".
+    pub varied: String,
+    pub elements: usize,
+    pub joint_modulus: f64,
+    pub tolerance: f64,
+    pub error: f64,
+    pub wall_s: f64,
+    pub steps: usize,
+}
+
+/// Reference displacement at a point.
+trait Reference {
+    fn at(&self, x: [f64; 3]) -> [f64; 3];
+}
+
+struct Column;
+impl Reference for Column {
+    fn at(&self, x: [f64; 3]) -> [f64; 3] {
+        // references/column.md
+        let (h, rho, g, e, nu) = (40.0, 2100.0, 9.81, 3.0e8, 0.3);
+        let m = e * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
+        let z = x[2];
+        [0.0, 0.0, -rho * g * (h * z - 0.5 * z * z) / m]
+    }
+}
+
+/// The finest FEM solution, looked up at coincident nodes.
+struct Nodal(HashMap<[i64; 3], [f64; 3]>);
+fn key(x: [f64; 3]) -> [i64; 3] {
+    x.map(|v| (v * 1e6).round() as i64)
+}
+impl Nodal {
+    fn new(fem: &FemSolution) -> Self {
+        Self(fem.coords.iter().enumerate().map(|(i, &x)| (key(x), [fem.u[3 * i], fem.u[3 * i + 1], fem.u[3 * i + 2]])).collect())
+    }
+}
+impl Reference for Nodal {
+    fn at(&self, x: [f64; 3]) -> [f64; 3] {
+        self.0.get(&key(x)).copied().unwrap_or([f64::NAN; 3])
+    }
+}
+
+/// Mass- (or volume-) weighted relative L2 error of nodal displacements.
+fn l2_error(points: impl Iterator<Item = ([f64; 3], [f64; 3], f64)>, reference: &dyn Reference) -> f64 {
+    let (mut num, mut den) = (0.0, 0.0);
+    for (x, u, w) in points {
+        let r = reference.at(x);
+        for d in 0..3 {
+            num += w * (u[d] - r[d]).powi(2);
+            den += w * r[d] * r[d];
+        }
+    }
+    (num / den).sqrt()
+}
+
+fn cdem_point(case: &str, varied: &str, scene: &Scene, reference: &dyn Reference) -> Result<StudyRow, Error> {
+    let r = run_scene(scene, &mut |_, _| {})?;
+    let m = &r.model;
+    let err = l2_error((0..m.n_nodes()).map(|i| (m.x0[i], [r.state.u[3 * i], r.state.u[3 * i + 1], r.state.u[3 * i + 2]], m.mass[i])), reference);
+    Ok(StudyRow {
+        case: case.into(),
+        method: "cdem".into(),
+        varied: varied.into(),
+        elements: m.elements.len(),
+        joint_modulus: scene.joints.normal_modulus.unwrap_or(f64::NAN),
+        tolerance: scene.solver.tolerance,
+        error: err,
+        wall_s: r.summary.wall_s,
+        steps: r.summary.steps,
+    })
+}
+
+fn fem_point(case: &str, scene: &Scene, reference: &dyn Reference) -> Result<(StudyRow, FemSolution), Error> {
+    let sol = solve_scene(scene)?;
+    // Nodal weights: one per node (the FEM meshes are uniform enough here;
+    // the study compares orders of magnitude).
+    let err = l2_error((0..sol.coords.len()).map(|i| (sol.coords[i], [sol.u[3 * i], sol.u[3 * i + 1], sol.u[3 * i + 2]], 1.0)), reference);
+    let row = StudyRow {
+        case: case.into(),
+        method: "fem".into(),
+        varied: "resolution".into(),
+        elements: sol.cells.len(),
+        joint_modulus: f64::NAN,
+        tolerance: f64::NAN,
+        error: err,
+        wall_s: sol.summary.wall_s,
+        steps: 1,
+    };
+    Ok((row, sol))
+}
+
+fn with_mesh(base: &Scene, mesh: &str) -> Scene {
+    let mut s = base.clone();
+    s.mesh.file = mesh.into();
+    s.perturbation.ratio = 0.0;
+    s.output.vtk = false;
+    s
+}
+
+/// The study of one case: `meshes` coarse to fine (paths relative to the base
+/// scene's directory), `base` index of the base mesh.
+fn study_case(
+    case: &str,
+    base_scene: &Scene,
+    meshes: &[&str],
+    base: usize,
+    moduli: [f64; 3],
+    tolerances: [f64; 3],
+    reference: &dyn Reference,
+    progress: &mut dyn FnMut(&str),
+) -> Result<Vec<StudyRow>, Error> {
+    let mut rows = Vec::new();
+    let base_scene = with_mesh(base_scene, meshes[base]);
+    for (k, mesh) in meshes.iter().enumerate() {
+        progress(&format!("{case}: mesh {mesh}"));
+        let s = with_mesh(&base_scene, mesh);
+        rows.push(cdem_point(case, if k == base { "base" } else { "resolution" }, &s, reference)?);
+        rows.push(fem_point(case, &s, reference)?.0);
+    }
+    for e_j in moduli {
+        if Some(e_j) == base_scene.joints.normal_modulus {
+            continue;
+        }
+        progress(&format!("{case}: E_j {e_j:e}"));
+        let mut s = base_scene.clone();
+        s.joints.normal_modulus = Some(e_j);
+        s.joints.shear_modulus = Some(e_j / 2.6);
+        rows.push(cdem_point(case, "stiffness", &s, reference)?);
+    }
+    for tol in tolerances {
+        if tol == base_scene.solver.tolerance {
+            continue;
+        }
+        progress(&format!("{case}: tolerance {tol:e}"));
+        let mut s = base_scene.clone();
+        s.solver.tolerance = tol;
+        rows.push(cdem_point(case, "tolerance", &s, reference)?);
+    }
+    Ok(rows)
+}
+
+/// One small point of the column study (10 layers, E_j = 1e11, tolerance
+/// 1e-7): (CDEM error, FEM error) against the analytic solution.
+pub fn column_base_point() -> Result<(f64, f64), Error> {
+    let scene = Scene::load(Path::new("verification/cases/column/column.toml"))?;
+    let c = cdem_point("column", "base", &with_mesh(&scene, "column.msh"), &Column)?;
+    let f = fem_point("column", &with_mesh(&scene, "column.msh"), &Column)?.0;
+    Ok((c.error, f.error))
+}
+
+/// Runs the whole study into `out/study.csv`, `out/study-column.png`,
+/// `out/study-slope.png`.
+pub fn run_study(out: &Path, progress: &mut dyn FnMut(&str)) -> Result<Vec<StudyRow>, Error> {
+    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
+    let column = Scene::load(Path::new("verification/cases/column/column.toml"))?;
+    let mut rows = study_case(
+        "column",
+        &column,
+        &["column.msh", "../../study/column-l20.msh", "../../study/column-l40.msh"],
+        0,
+        [1e10, 1e11, 1e12],
+        [1e-3, 1e-5, 1e-7],
+        &Column,
+        progress,
+    )?;
+    let slope = Scene::load(Path::new("verification/cases/slope/slope.toml"))?;
+    progress("slope: reference FEM on slope-h05 (0.5 m)");
+    let (_, finest) = fem_point("slope", &with_mesh(&slope, "../../study/slope-h05.msh"), &Column)?;
+    let reference = Nodal::new(&finest);
+    rows.extend(study_case(
+        "slope",
+        &slope,
+        &["../../study/slope-h4.msh", "slope.msh", "../../study/slope-h1.msh"],
+        1,
+        [1e10, 1e11, 1e12],
+        [1e-3, 1e-4, 1e-5],
+        &reference,
+        progress,
+    )?);
+    let mut w = csv::Writer::from_writer(Vec::new());
+    for r in &rows {
+        w.serialize(r).map_err(|e| Error::io(out, std::io::Error::other(e)))?;
+    }
+    let bytes = w.into_inner().map_err(|e| Error::io(out, std::io::Error::other(e.to_string())))?;
+    crate::output::write_atomic(&out.join("study.csv"), &bytes)?;
+    for case in ["column", "slope"] {
+        let pick = |method: &str, varied: &[&str]| -> Vec<(f64, f64)> {
+            let mut v: Vec<(f64, f64)> = rows
+                .iter()
+                .filter(|r| r.case == case && r.method == method && varied.contains(&r.varied.as_str()))
+                .map(|r| (r.wall_s.max(1e-4), r.error.max(1e-12)))
+                .collect();
+            v.sort_by(|a, b| a.0.total_cmp(&b.0));
+            v
+        };
+        let (res, stiff, tol, fem) =
+            (pick("cdem", &["base", "resolution"]), pick("cdem", &["base", "stiffness"]), pick("cdem", &["base", "tolerance"]), pick("fem", &["resolution"]));
+        let series = [
+            Series { name: "CDEM, mesh resolution", points: &res },
+            Series { name: "CDEM, joint stiffness", points: &stiff },
+            Series { name: "CDEM, tolerance", points: &tol },
+            Series { name: "FEM, mesh resolution", points: &fem },
+        ];
+        let title = format!("{case}: displacement error against run time");
+        line_plot(&out.join(format!("study-{case}.png")), &title, "wall time (s)", "relative L2 error of u", &series, Scale::Log, Scale::Log)?;
+    }
+    let mut md = String::from("| case | method | varied | elements | E_j (Pa) | tolerance | error | wall (s) | steps |\n|---|---|---|---|---|---|---|---|---|\n");
+    for r in &rows {
+        let _ = writeln!(md, "| {} | {} | {} | {} | {:.0e} | {:.0e} | {:.3e} | {:.3} | {} |", r.case, r.method, r.varied, r.elements, r.joint_modulus, r.tolerance, r.error, r.wall_s, r.steps);
+    }
+    crate::output::write_atomic(&out.join("study.md"), md.as_bytes())?;
+    Ok(rows)
+}

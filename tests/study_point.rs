@@ -1,0 +1,14 @@
+//! One small point of the error-against-run-time study (src/study.rs; the
+//! full study runs in `cdem study` / `cdem reproduce`): the 10-layer column
+//! against the analytic solution (references/column.md). The continuous FEM
+//! is nodally exact for this 1-D problem; CDEM with E_j/L = 1e11 Pa/m is
+//! within the 1 % of the core issue (series joint compliance, about 0.1 %).
+
+#[test]
+fn column_point_of_the_study_fem_exact_cdem_within_one_percent() {
+    let (cdem, fem) = cdem::study::column_base_point().unwrap();
+    println!("study column point: CDEM L2 error {cdem:.3e}, FEM {fem:.3e}");
+    assert!(fem < 1e-10, "FEM error {fem}");
+    assert!(cdem < 0.01, "CDEM error {cdem}");
+    assert!(cdem > 1e-5, "CDEM with springs cannot be exact: joint compliance is missing");
+}
