@@ -164,7 +164,7 @@ fn fs_converges_with_slice_count() {
         let v: Vec<f64> = [25, 50, 100, 200, 400].iter().map(|&n| fs(n, m)).collect();
         let d: Vec<f64> = v.windows(2).map(|p| (p[1] - p[0]).abs()).collect();
         println!("{m:?}: {v:?}");
-        assert!((v[1] - v[4]).abs() < 1e-3, "{m:?}: 50 slices off by {}", (v[1] - v[4]).abs());
+        assert!((v[1] - v[4]).abs() < 1e-4, "{m:?}: 50 slices off by {}", (v[1] - v[4]).abs());
         for w in d.windows(2) {
             assert!(w[1] < 0.5 * w[0] || w[1] < 1e-9, "{m:?}: differences {d:?} do not shrink");
         }

@@ -1,0 +1,94 @@
+//! Eq. 21 and 22 on the LEM critical surface of the paper slope (DESIGN.md
+//! section 4), on the conforming mesh verification/cases/slope-slip/ whose
+//! interface "slip" is the Bishop critical circle. The paper: LEM 1.084, eq. 21
+//! from its CDEM 1.086 (references/paper.md); the LEM value here is our
+//! Bishop on the same circle (references/lem.md, cross-checked with pySlope).
+//!
+//! Sign segments of K_i: runs of equal sign from toe to crest; runs shorter
+//! than `MIN_SEGMENT` (about one element along the surface) merge into their
+//! neighbours. Writes target/figures/fig9-*.png.
+
+use std::path::Path;
+
+use cdem::analysis::slip::{from_springs, from_stresses, SlipCircle};
+use cdem::analysis::{safety_factors, sign_segments, Segment, SurfacePoint};
+use cdem::lem::{evaluate_circle, LemInput};
+use cdem::lem::Circle;
+use cdem::output::figures::{line_plot, section_contour, Scale, Series};
+use cdem::output::section::element_mean_displacement;
+use cdem::scene::Scene;
+
+/// The circle of slope-slip.geo (centre, through the toe).
+const XC: f64 = 24.006;
+const ZC: f64 = 63.222;
+const TOE: [f64; 2] = [20.0, 20.0];
+/// Minimum sign-segment length (m): one element along the surface.
+const MIN_SEGMENT: f64 = 2.0;
+const C: f64 = 16e3;
+const PHI_DEG: f64 = 18.0;
+
+fn segments(p: &[SurfacePoint], k_i: &[f64]) -> Vec<Segment> {
+    let s: Vec<f64> = p.iter().map(|q| q.s).collect();
+    sign_segments(&s, k_i, MIN_SEGMENT)
+}
+
+fn describe(seg: &[Segment]) -> Vec<String> {
+    seg.iter().map(|g| format!("{} from {:.0} m to {:.0} m", if g.sign > 0 { "+" } else { "-" }, g.s0, g.s1)).collect()
+}
+
+#[test]
+fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
+    let r = ((TOE[0] - XC).powi(2) + (TOE[1] - ZC).powi(2)).sqrt();
+    let lem = LemInput::load(Path::new("verification/lem/paper-slope.toml")).unwrap();
+    let fs_lem = evaluate_circle(&lem.section, Circle { xc: XC, zc: ZC, r }, 50).unwrap().bishop.unwrap();
+
+    let scene = Scene::load(Path::new("verification/cases/slope-slip/slope-slip.toml")).unwrap();
+    let run = cdem::run::run_scene(&scene, &mut |_, _| {}).unwrap();
+    assert!(run.summary.converged);
+    let fem = cdem::fem::solve_scene(&scene).unwrap();
+    let mesh = cdem::mesh::gmsh::read_msh(&scene.mesh_path()).unwrap();
+    let circle = SlipCircle { xc: XC, zc: ZC, toe: TOE };
+    let tan_phi = PHI_DEG.to_radians().tan();
+
+    let springs = from_springs(&run.model, &run.state, "slip", &circle).unwrap();
+    let cdem_stress = from_stresses(&mesh, &run.model.mesh_coords, "slip", &circle, run.stress.as_ref().unwrap()).unwrap();
+    let fem_stress = from_stresses(&mesh, &fem.coords, "slip", &circle, &fem.stress).unwrap();
+    let k_springs = safety_factors(&springs, C, tan_phi);
+    let k_cdem = safety_factors(&cdem_stress, C, tan_phi);
+    let k_fem = safety_factors(&fem_stress, C, tan_phi);
+    let rel = |k: f64| (k - fs_lem) / fs_lem;
+    println!("LEM Bishop on the slip circle: {fs_lem:.4} (paper LEM 1.084)");
+    println!("eq. 21 CDEM springs: {:.4} ({:+.2} %; paper 1.086)", k_springs.k, 100.0 * rel(k_springs.k));
+    println!("eq. 21 CDEM stresses: {:.4} ({:+.2} %)", k_cdem.k, 100.0 * rel(k_cdem.k));
+    println!("eq. 21 FEM stresses: {:.4} ({:+.2} %)", k_fem.k, 100.0 * rel(k_fem.k));
+
+    // The paper's comparison: eq. 21 from the CDEM spring forces on the
+    // conforming interface against the LEM on the same surface.
+    assert!(rel(k_springs.k).abs() < 0.02, "eq. 21 (springs) {:.4} vs LEM {fs_lem:.4}", k_springs.k);
+    // Two solvers of the same elastic problem give the same stress-based K.
+    assert!(((k_cdem.k - k_fem.k) / k_fem.k).abs() < 0.005, "CDEM {:.4} vs FEM {:.4}", k_cdem.k, k_fem.k);
+
+    let seg_springs = segments(&springs, &k_springs.k_i);
+    let seg_cdem = segments(&cdem_stress, &k_cdem.k_i);
+    let seg_fem = segments(&fem_stress, &k_fem.k_i);
+    let signs = |s: &[Segment]| s.iter().map(|g| g.sign).collect::<Vec<_>>();
+    println!("segments CDEM springs {:?}, CDEM stress {:?}, FEM {:?}", describe(&seg_springs), describe(&seg_cdem), describe(&seg_fem));
+    assert_eq!(signs(&seg_cdem), signs(&seg_fem), "CDEM and FEM give the same sign segments");
+    assert_eq!(signs(&seg_springs), signs(&seg_fem), "spring- and stress-based segments agree");
+    insta::assert_yaml_snapshot!("ki_segments_cdem_springs", describe(&seg_springs));
+
+    // Fig. 9: the surface on the section, and K_i from toe to crest.
+    std::fs::create_dir_all("target/figures").unwrap();
+    let patches = cdem::output::section::front_patches(&run.model, |e| element_mean_displacement(&run.model, &run.state.u, e, 2));
+    let arc: Vec<(f64, f64)> = (0..=100).map(|k| {
+        let a0 = (TOE[1] - ZC).atan2(TOE[0] - XC);
+        let a1 = (40.0 - ZC).atan2((r * r - (40.0 - ZC).powi(2)).sqrt());
+        let a = a0 + (a1 - a0) * k as f64 / 100.0;
+        (XC + r * a.cos(), ZC + r * a.sin())
+    }).collect();
+    section_contour(Path::new("target/figures/fig9-surface.png"), "Slip surface (LEM critical circle) on u_z", "u_z (m)", &patches, &[arc]).unwrap();
+    let clamp = |p: &[SurfacePoint], k: &[f64]| p.iter().zip(k).map(|(q, &v)| (q.s, v.clamp(-5.0, 5.0))).collect::<Vec<_>>();
+    let (a, b, c) = (clamp(&springs, &k_springs.k_i), clamp(&cdem_stress, &k_cdem.k_i), clamp(&fem_stress, &k_fem.k_i));
+    let series = [Series { name: "CDEM springs", points: &a }, Series { name: "CDEM stresses", points: &b }, Series { name: "FEM stresses", points: &c }];
+    line_plot(Path::new("target/figures/fig9-ki.png"), "K_i along the slip surface, toe (s = 0) to crest (clamped to +-5)", "s (m)", "K_i", &series, Scale::Linear, Scale::Linear).unwrap();
+}
