@@ -78,6 +78,8 @@ pub struct ProgressiveResult {
     pub u_elastic: Vec<f64>,
     pub state: State,
     pub stages: Vec<Stage>,
+    /// Displacement at each stage (parallel to `stages`), for figures and VTK.
+    pub stage_u: Vec<Vec<f64>>,
     /// Phase-2 step of each spring's first failure (None: never failed).
     pub failed_at: Vec<Option<usize>>,
     pub end: EndState,
@@ -100,6 +102,7 @@ pub fn run_progressive(scene: &Scene, params: &FailureParams, progress: &mut dyn
     solver.set_failure(&model, true);
     let mut failed_at = vec![None; model.springs.len()];
     let mut stages = Vec::new();
+    let mut stage_u = Vec::new();
     let start = state.step;
     let mut end = EndState::Undecided;
     while state.step - start < params.max_steps {
@@ -119,6 +122,7 @@ pub fn run_progressive(scene: &Scene, params: &FailureParams, progress: &mut dyn
             let failed_shear = state.springs.status.iter().filter(|s| **s == SpringStatus::Shear).count();
             let max_displacement = max_displacement_since(&state.u, &u_elastic);
             stages.push(Stage { step: k, failed_tension, failed_shear, max_displacement, kinetic_energy: kinetic, unbalanced_ratio: ratio });
+            stage_u.push(state.u.clone());
         }
         if k % 100 == 0 {
             progress(state.step, ratio);
@@ -133,5 +137,38 @@ pub fn run_progressive(scene: &Scene, params: &FailureParams, progress: &mut dyn
         }
     }
     let phase2_steps = state.step - start;
-    Ok(ProgressiveResult { model, elastic, u_elastic, state, stages, failed_at, end, phase2_steps })
+    Ok(ProgressiveResult { model, elastic, u_elastic, state, stages, stage_u, failed_at, end, phase2_steps })
+}
+
+/// Writes phase-2 outputs: `stages.csv`, `failed_springs.csv` (spring, first
+/// failure step, kind, position) and VTK frames of the stages (`stage-NNNNNNNN.vtu`,
+/// collected in `failure.pvd`), into `out` (created).
+pub fn write_outputs(result: &ProgressiveResult, out: &std::path::Path, vtk: bool) -> Result<(), Error> {
+    use crate::output::{vtk as v, write_atomic};
+    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
+    let mut w = csv::Writer::from_writer(Vec::new());
+    for s in &result.stages {
+        w.serialize(s).map_err(|e| Error::io(out, std::io::Error::other(e)))?;
+    }
+    let bytes = w.into_inner().map_err(|e| Error::io(out, std::io::Error::other(e.to_string())))?;
+    write_atomic(&out.join("stages.csv"), &bytes)?;
+    let mut text = String::from("spring,first_failure_step,kind,x,y,z\n");
+    let sp = &result.model.springs;
+    for (k, at) in result.failed_at.iter().enumerate() {
+        if let Some(step) = at {
+            let x = result.model.x0[sp.a[k] as usize];
+            text.push_str(&format!("{k},{step},{:?},{},{},{}\n", result.state.springs.status[k], x[0], x[1], x[2]));
+        }
+    }
+    write_atomic(&out.join("failed_springs.csv"), text.as_bytes())?;
+    if vtk {
+        let mut pvd = Vec::new();
+        for (s, u) in result.stages.iter().zip(&result.stage_u) {
+            let name = format!("stage-{:08}.vtu", s.step);
+            v::write_vtu(&out.join(&name), &result.model, &v::Frame { u, stress: None })?;
+            pvd.push((s.step as f64, name));
+        }
+        v::write_pvd(&out.join("failure.pvd"), &pvd)?;
+    }
+    Ok(())
 }

@@ -93,8 +93,14 @@ pub fn from_stresses(mesh: &Mesh, coords: &[[f64; 3]], group: &str, circle: &Sli
     Some(stations(pts))
 }
 
-/// Traction at the slip springs of a CDEM state (interface named `group`).
+/// Traction at the slip springs of a CDEM state (interface named `group`),
+/// merged into stations.
 pub fn from_springs(model: &Model, state: &State, group: &str, circle: &SlipCircle) -> Option<Vec<SurfacePoint>> {
+    Some(stations(spring_points(model, state, group, circle)?.into_iter().map(|(_, p)| p).collect()))
+}
+
+/// Traction at each spring of the slip interface, with the spring's index.
+pub fn spring_points(model: &Model, state: &State, group: &str, circle: &SlipCircle) -> Option<Vec<(usize, SurfacePoint)>> {
     let iface = model.interfaces.iter().position(|i| i.name == group)? as u16;
     let sp = &model.springs;
     let mut pts = Vec::new();
@@ -110,7 +116,7 @@ pub fn from_springs(model: &Model, state: &State, group: &str, circle: &SlipCirc
         let traction = f.map(|v| v / sp.area[k]);
         let sigma_n = -(traction[0] * n[0] + traction[1] * n[1] + traction[2] * n[2]);
         let tau = -(traction[0] * t[0] + traction[1] * t[1] + traction[2] * t[2]);
-        pts.push(SurfacePoint { s, area: sp.area[k], sigma_n, tau });
+        pts.push((k, SurfacePoint { s, area: sp.area[k], sigma_n, tau }));
     }
-    Some(stations(pts))
+    Some(pts)
 }

@@ -89,6 +89,9 @@ fn main() -> ExitCode {
 
 fn run(scene_path: &std::path::Path, out: &std::path::Path) -> cdem::Result<()> {
     let scene = Scene::load(scene_path)?;
+    if let Some(params) = &scene.failure {
+        return run_progressive(&scene, params, out);
+    }
     let pb = progress_bar(scene.solver.max_steps);
     let result = cdem::run::run_scene(&scene, &mut |step, ratio| {
         pb.set_position(step as u64);
@@ -122,6 +125,36 @@ fn fem(scene_path: &std::path::Path, out: &std::path::Path) -> cdem::Result<()> 
         s.unbalanced_ratio,
         s.min_uz,
         s.min_szz.map_or("-".into(), |v| format!("{v:.4e}")),
+        out.display()
+    );
+    Ok(())
+}
+
+/// A scene with `[failure]`: phase 1 (elastic) then phase 2 (breakable joints).
+fn run_progressive(scene: &Scene, params: &cdem::progressive::FailureParams, out: &std::path::Path) -> cdem::Result<()> {
+    let t0 = std::time::Instant::now();
+    let pb = progress_bar(scene.solver.max_steps + params.max_steps);
+    let r = cdem::progressive::run_progressive(scene, params, &mut |step, ratio| {
+        pb.set_position(step as u64);
+        pb.set_message(format!("unbalanced ratio {ratio:.2e}"));
+    })?;
+    pb.finish_and_clear();
+    let stress = scene.output.stress.then(|| r.model.element_stresses(&r.state.u));
+    let converged = r.end == cdem::progressive::EndState::Equilibrium;
+    let report = cdem::solver::RunReport { converged, steps: r.elastic.steps + r.phase2_steps, ..r.elastic.clone() };
+    let summary = cdem::run::summarize(&r.model, &r.state, &report, stress.as_deref(), t0.elapsed().as_secs_f64());
+    let result = cdem::run::RunResult { model: r.model.clone(), state: r.state.clone(), report, stress, frames: Vec::new(), summary };
+    cdem::run::write_outputs(scene, &result, out)?;
+    cdem::progressive::write_outputs(&r, out, scene.output.vtk)?;
+    let last = r.stages.last();
+    println!(
+        "phase 1: {} steps; phase 2: {:?} after {} steps, failed springs {} (tension) {} (shear), max displacement since phase 1 {:.3e} m -> {}",
+        r.elastic.steps,
+        r.end,
+        r.phase2_steps,
+        last.map_or(0, |s| s.failed_tension),
+        last.map_or(0, |s| s.failed_shear),
+        last.map_or(0.0, |s| s.max_displacement),
         out.display()
     );
     Ok(())

@@ -1,0 +1,133 @@
+//! Progressive failure of the paper slope (Fig. 10): failure judged only on
+//! the LEM critical circle (interface "slip" of verification/cases/slope-slip/),
+//! c = 16 kPa, phi = 18 deg, T = 16 kPa, brittle loss of cohesion.
+//!
+//! Physics asserted: the first springs to fail lie where the elastic K_i
+//! (eq. 22) is below 1; with the cohesion gone the friction-only eq. 21 of
+//! the elastic state is below 1, so the mass must slide, and it does
+//! (global sliding), although the LEM gives FS 1.089. The sequence (zones of
+//! the surface in the order they first fail and are fully failed) is an insta
+//! snapshot. Zones: the surface cut where the elastic K_i crosses 1, lettered
+//! from the toe. Writes target/figures/fig10-*.png.
+
+use std::path::Path;
+
+use cdem::analysis::safety_factors;
+use cdem::analysis::slip::{from_springs, spring_points, SlipCircle};
+use cdem::output::figures::{section_contour, Patch};
+use cdem::output::section::{element_mean_displacement, front_patches};
+use cdem::progressive::{run_progressive, EndState};
+use cdem::scene::Scene;
+use cdem::solver::State;
+
+const CIRCLE: SlipCircle = SlipCircle { xc: 24.006, zc: 63.222, toe: [20.0, 20.0] };
+
+#[test]
+fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
+    let scene = Scene::load(Path::new("verification/cases/slope-slip/slope-slip.toml")).unwrap();
+    let params = scene.failure.clone().unwrap();
+    let r = run_progressive(&scene, &params, &mut |_, _| {}).unwrap();
+    let tan_phi = 18f64.to_radians().tan();
+
+    // Elastic K_i per station (springs), from the end of phase 1.
+    let mut elastic = State::new(&r.model);
+    elastic.u = r.u_elastic.clone();
+    let pts = from_springs(&r.model, &elastic, "slip", &CIRCLE).unwrap();
+    let k = safety_factors(&pts, 16e3, tan_phi);
+    let friction_only = safety_factors(&pts, 0.0, tan_phi);
+    println!("elastic eq. 21: K = {:.4}; friction only (c lost): {:.4}", k.k, friction_only.k);
+    assert!(friction_only.k < 1.0, "without cohesion the surface must be over-stressed");
+
+    // Zones where K_i < 1 or >= 1, from the toe.
+    let mut zones: Vec<(bool, f64, f64)> = Vec::new(); // (weak, s0, s1)
+    for (i, p) in pts.iter().enumerate() {
+        let weak = k.k_i[i] < 1.0;
+        let edge = if i == 0 { 0.0 } else { 0.5 * (pts[i - 1].s + p.s) };
+        match zones.last_mut() {
+            Some(z) if z.0 == weak => z.2 = p.s,
+            _ => zones.push((weak, edge, p.s)),
+        }
+    }
+    let zone_of = |s: f64| zones.iter().position(|z| s <= z.2 + 1e-9).unwrap_or(zones.len() - 1);
+
+    // First and last failure step per zone.
+    let sp = &r.model.springs;
+    let iface = r.model.interfaces.iter().position(|i| i.name == "slip").unwrap() as u16;
+    let mut first = vec![usize::MAX; zones.len()];
+    let mut last = vec![0; zones.len()];
+    let mut all_failed = vec![true; zones.len()];
+    let mut first_step = usize::MAX;
+    for s in (0..sp.len()).filter(|&s| sp.interface[s] == iface) {
+        let z = zone_of(CIRCLE.frame(r.model.x0[sp.a[s] as usize]).0);
+        match r.failed_at[s] {
+            Some(step) => {
+                first[z] = first[z].min(step);
+                last[z] = last[z].max(step);
+                first_step = first_step.min(step);
+            }
+            None => all_failed[z] = false,
+        }
+    }
+    // Exactly the springs that violate eq. 17-18 at the elastic state, in
+    // their own frame (recomputed here from the spring law), fail at the
+    // first phase-2 step.
+    let (c, t_strength) = (16e3, 16e3);
+    for s in (0..sp.len()).filter(|&s| sp.interface[s] == iface) {
+        let (a, b) = (sp.a[s] as usize, sp.b[s] as usize);
+        let n = sp.normal[s];
+        let d: Vec<f64> = (0..3).map(|i| r.u_elastic[3 * b + i] - r.u_elastic[3 * a + i]).collect();
+        let dn = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+        let f_n = sp.kn[s] * dn;
+        let f_s = (0..3).map(|i| (sp.ks[s] * (d[i] - dn * n[i])).powi(2)).sum::<f64>().sqrt();
+        let violated = f_n >= t_strength * sp.area[s] || f_s > (-f_n).max(0.0) * tan_phi + c * sp.area[s];
+        assert_eq!(r.failed_at[s] == Some(first_step), violated, "spring {s}: failed at {:?}, eq. 17-18 violated {violated}", r.failed_at[s]);
+    }
+    // And they are where K_i (circle frame, eq. 22) is lowest.
+    let per_spring = spring_points(&r.model, &elastic, "slip", &CIRCLE).unwrap();
+    let ki = |p: &cdem::analysis::SurfacePoint| (p.sigma_n * tan_phi + c) / p.tau;
+    let (mut first_k, mut later_k) = (Vec::new(), Vec::new());
+    for (s, p) in &per_spring {
+        if ki(p) > 0.0 {
+            if r.failed_at[*s] == Some(first_step) { first_k.push(ki(p)) } else { later_k.push(ki(p)) }
+        }
+    }
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    println!("{} springs fail at step {first_step}: mean K_i {:.3} (max {:.3}); the others mean K_i {:.3}", first_k.len(), mean(&first_k), first_k.iter().cloned().fold(0.0, f64::max), mean(&later_k));
+    assert!(mean(&first_k) < 1.0 && mean(&first_k) < mean(&later_k), "the first failures are where K_i is lowest");
+    assert_eq!(r.end, EndState::GlobalSliding, "the mass slides once the cohesion is lost");
+
+    // The sequence as ranks (robust to step counts).
+    let rank = |v: &[usize], z: usize| v.iter().filter(|&&x| x < v[z]).count() + 1;
+    let sequence: Vec<String> = (0..zones.len())
+        .map(|z| {
+            let (weak, s0, s1) = zones[z];
+            format!(
+                "{} {:.0}-{:.0} m K_i {}: first failure rank {}, fully failed {} (rank {})",
+                (b'a' + z as u8) as char,
+                s0,
+                s1,
+                if weak { "< 1" } else { ">= 1" },
+                rank(&first, z),
+                all_failed[z],
+                rank(&last, z)
+            )
+        })
+        .chain(std::iter::once(format!("end: {:?}", r.end)))
+        .collect();
+    for line in &sequence {
+        println!("{line}");
+    }
+    insta::assert_yaml_snapshot!("slope_failure_sequence", sequence);
+
+    // Fig. 10: horizontal and vertical displacement since phase 1 at three stages.
+    std::fs::create_dir_all("target/figures").unwrap();
+    let n = r.stages.len();
+    for (tag, idx) in [("early", 0), ("middle", n / 2), ("end", n - 1)] {
+        let du: Vec<f64> = r.stage_u[idx].iter().zip(&r.u_elastic).map(|(a, b)| a - b).collect();
+        for (comp, name) in [(0, "u_x"), (2, "u_z")] {
+            let p: Vec<Patch> = front_patches(&r.model, |e| element_mean_displacement(&r.model, &du, e, comp));
+            let title = format!("Phase 2, step {}: {name} since phase 1", r.stages[idx].step);
+            section_contour(Path::new(&format!("target/figures/fig10-{tag}-{name}.png")), &title, &format!("{name} (m)"), &p, &[]).unwrap();
+        }
+    }
+}
