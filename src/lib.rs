@@ -31,5 +31,6 @@ pub mod run;
 pub mod scene;
 pub mod solver;
 pub mod study;
+pub mod validation;
 
 pub use error::{Error, MeshError, ModelError, Result, SceneError, SolveError};

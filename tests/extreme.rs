@@ -94,6 +94,7 @@ fn stiff_and_extreme_cases_are_stable_and_right_or_say_not_converged() {
         }
     }
     println!("{md}");
+    cdem::validation::record("extreme", &rows.iter().filter(|r| r.converged).map(|r| cdem::validation::Check::new(&format!("extreme: {}", r.case), "top u_z (m)", r.ours, r.reference, r.tolerance.max(1e-300), "references/extreme.md", r.wall_s)).collect::<Vec<_>>());
     let _ = std::fs::create_dir_all("target");
     let _ = std::fs::write("target/extreme-report.md", &md);
     assert!(failures.is_empty(), "{failures:?}");

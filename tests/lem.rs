@@ -46,19 +46,26 @@ fn acads_1a_bishop_agrees_with_slide_and_the_referee() {
     assert!(c.zc - c.r >= 20.0 - 1e-9 || c.xc < c.exit[0] || c.xc > c.entry[0]);
 }
 
-/// Measured: 0.9841 (converged in slice count), 0.2 % below Slide's 0.986
-/// and 1.6 % below the referee's 1.00: outside the intersection of the two
-/// 1.5 % bands ([0.9850, 1.0008]) by 0.0009. Not widened: reported in
-/// references/lem.md. Our Bishop minimum is 0.2 % below Slide's too (and
-/// pySlope agrees with our Bishop on our circle), so the search finds a
-/// slightly more critical circle than Slide's.
+/// Spencer on ACADS 1(a): measured 0.9841 (converged in slice count), 0.2 %
+/// below Slide's 0.986 (asserted: within 1.5 %) and 1.6 % below the
+/// referee's 1.00, i.e. outside the referee's 1.5 % band by 0.0009. That
+/// half is not widened and not asserted: it is recorded in the validation
+/// report and explained in references/lem.md (our Bishop minimum is 0.2 %
+/// below Slide's too, and pySlope agrees with our Bishop on our circle: the
+/// search finds a slightly more critical circle than Slide's).
 #[test]
-#[ignore = "Spencer 0.9841 is below the 0.9850 bound of the referee's 1.5 % band (see references/lem.md)"]
-fn acads_1a_spencer_agrees_with_slide_and_the_referee() {
+fn acads_1a_spencer_agrees_with_slide_and_is_reported_against_the_referee() {
     let r = analyse(&load("verification/lem/acads-1a.toml")).unwrap();
     let c = critical(&r, Method::Spencer);
-    let (lo, hi) = both_bands(ACADS_SLIDE_SPENCER, ACADS_REFEREE);
-    assert!(c.fs >= lo && c.fs <= hi, "Spencer FS {} outside [{lo}, {hi}]", c.fs);
+    let b = critical(&r, Method::Bishop);
+    println!("ACADS 1(a) Spencer {:.5}: Slide {ACADS_SLIDE_SPENCER}, referee {ACADS_REFEREE}", c.fs);
+    cdem::validation::record("lem_acads", &[
+        cdem::validation::Check::new("ACADS 1(a)", "Bishop FS vs Slide", b.fs, ACADS_SLIDE_BISHOP, 0.015, "references/lem.md", r.wall_s),
+        cdem::validation::Check::new("ACADS 1(a)", "Bishop FS vs referee", b.fs, ACADS_REFEREE, 0.015, "references/lem.md", r.wall_s),
+        cdem::validation::Check::new("ACADS 1(a)", "Spencer FS vs Slide", c.fs, ACADS_SLIDE_SPENCER, 0.015, "references/lem.md", r.wall_s),
+        cdem::validation::Check::new("ACADS 1(a)", "Spencer FS vs referee (1.6 % low, see lem.md)", c.fs, ACADS_REFEREE, f64::NAN, "references/lem.md", r.wall_s),
+    ]);
+    assert!((c.fs - ACADS_SLIDE_SPENCER).abs() <= 0.015 * ACADS_SLIDE_SPENCER, "Spencer FS {} vs Slide {ACADS_SLIDE_SPENCER}", c.fs);
 }
 
 #[test]
@@ -77,6 +84,7 @@ fn paper_slope_bishop_matches_the_papers_lem() {
     let r = analyse(&load("verification/lem/paper-slope.toml")).unwrap();
     let c = critical(&r, Method::Bishop);
     println!("paper slope Bishop {:.4} (paper 1.084), circle ({:.3}, {:.3}, {:.3})", c.fs, c.xc, c.zc, c.r);
+    cdem::validation::record("lem_paper_slope", &[cdem::validation::Check::new("paper slope LEM", "Bishop FS (tolerance: 0.01 absolute)", c.fs, PAPER_LEM_FS, 0.01 / PAPER_LEM_FS, "references/paper.md", r.wall_s)]);
     assert!((c.fs - PAPER_LEM_FS).abs() <= 0.01, "Bishop FS {}", c.fs);
     for m in Method::ALL {
         let c = critical(&r, m);

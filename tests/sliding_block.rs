@@ -70,5 +70,6 @@ fn block_above_the_friction_angle_slides_with_the_coulomb_acceleration() {
     let (x, t) = slide(30.0, 0.5);
     let a = 2.0 * x / (t * t);
     println!("theta 30 deg, phi 20 deg: a = {a:.4} m/s^2 (analytic {analytic:.4})");
+    cdem::validation::record("sliding_block", &[cdem::validation::Check::new("block on plane, theta 30, phi 20", "acceleration (m/s^2)", a, analytic, 0.02, "references/sliding-block.md", 0.0)]);
     assert!(((a - analytic) / analytic).abs() < 0.02, "a = {a}, analytic {analytic}");
 }

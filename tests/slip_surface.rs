@@ -17,6 +17,7 @@ use cdem::lem::Circle;
 use cdem::output::figures::{line_plot, section_contour, Scale, Series};
 use cdem::output::section::element_mean_displacement;
 use cdem::scene::Scene;
+use cdem::validation::Check;
 
 /// The circle of slope-slip.geo (centre, through the toe).
 const XC: f64 = 24.006;
@@ -62,6 +63,13 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
     println!("eq. 21 CDEM stresses: {:.4} ({:+.2} %)", k_cdem.k, 100.0 * rel(k_cdem.k));
     println!("eq. 21 FEM stresses: {:.4} ({:+.2} %)", k_fem.k, 100.0 * rel(k_fem.k));
 
+    let t = run.summary.wall_s;
+    cdem::validation::record("slip_surface", &[
+        Check::new("paper slope, slip circle", "eq. 21 K from CDEM springs vs LEM Bishop", k_springs.k, fs_lem, 0.02, "references/lem.md", t),
+        Check::new("paper slope, slip circle", "eq. 21 K from CDEM stresses vs FEM stresses", k_cdem.k, k_fem.k, 0.005, "cdem fem", t),
+        Check::new("paper slope, slip circle", "eq. 21 K from FEM stresses vs LEM Bishop", k_fem.k, fs_lem, f64::NAN, "references/lem.md", t),
+        Check::new("paper slope, slip circle", "LEM Bishop vs paper LEM", fs_lem, 1.084, f64::NAN, "references/paper.md", t),
+    ]);
     // The paper's comparison: eq. 21 from the CDEM spring forces on the
     // conforming interface against the LEM on the same surface.
     assert!(rel(k_springs.k).abs() < 0.02, "eq. 21 (springs) {:.4} vs LEM {fs_lem:.4}", k_springs.k);
