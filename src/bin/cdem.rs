@@ -48,10 +48,13 @@ enum Command {
         #[arg(long, default_value = "study")]
         out: PathBuf,
     },
-    /// Run every committed case and write DIR/report.md.
+    /// Run every paper case and write DIR/report.md with the validation table and figures.
     Reproduce {
         #[arg(long, default_value = "reproduce")]
         out: PathBuf,
+        /// Regenerate the meshes from their .geo with gmsh first.
+        #[arg(long)]
+        regenerate: bool,
     },
 }
 
@@ -74,9 +77,7 @@ fn main() -> ExitCode {
         Command::Study { out } => cdem::study::run_study(&out, &mut |what| eprintln!("study: {what}")).map(|rows| {
             eprintln!("study: {} points -> {}", rows.len(), out.join("study.csv").display());
         }),
-        Command::Reproduce { out } => cdem::reproduce::reproduce(&out, &mut |step, ratio| {
-            let _ = (step, ratio);
-        }),
+        Command::Reproduce { out, regenerate } => cdem::reproduce::reproduce(&out, regenerate, &mut |what| eprintln!("reproduce: {what}")),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

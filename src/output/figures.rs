@@ -73,7 +73,18 @@ pub fn line_plot(path: &Path, title: &str, x_label: &str, y_label: &str, series:
     macro_rules! draw {
         ($chart:expr) => {{
             let mut chart = $chart.map_err(|e| plot_err(path, e))?;
-            chart.configure_mesh().x_desc(x_label).y_desc(y_label).label_style(("sans-serif", 15)).draw().map_err(|e| plot_err(path, e))?;
+            let fmt = |log: bool| {
+                move |v: &f64| if log { format!("{v:.0e}") } else { format!("{v:.6}").trim_end_matches('0').trim_end_matches('.').to_string() }
+            };
+            chart
+                .configure_mesh()
+                .x_desc(x_label)
+                .y_desc(y_label)
+                .x_label_formatter(&fmt(x == Scale::Log))
+                .y_label_formatter(&fmt(y == Scale::Log))
+                .label_style(("sans-serif", 15))
+                .draw()
+                .map_err(|e| plot_err(path, e))?;
             for (k, s) in series.iter().enumerate() {
                 let c = PALETTE[k % PALETTE.len()];
                 let pts: Vec<(f64, f64)> = s.points.iter().copied().filter(|p| p.0.is_finite() && p.1.is_finite()).collect();
@@ -82,7 +93,9 @@ pub fn line_plot(path: &Path, title: &str, x_label: &str, y_label: &str, series:
                     .map_err(|e| plot_err(path, e))?
                     .label(s.name)
                     .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2)));
-                chart.draw_series(pts.iter().map(|&p| Circle::new(p, 3, c.filled()))).map_err(|e| plot_err(path, e))?;
+                if pts.len() <= 200 {
+                    chart.draw_series(pts.iter().map(|&p| Circle::new(p, 3, c.filled()))).map_err(|e| plot_err(path, e))?;
+                }
             }
             chart
                 .configure_series_labels()
