@@ -193,19 +193,7 @@ pub fn element_matrices(kind: CellKind, x: &[[f64; 3]], lame: Lame, b: [f64; 3])
     Ok(ElementMatrices { k, f, volume })
 }
 
-/// Stress (Pa, Voigt xx yy zz yz xz xy) of a displacement gradient `h[i][j] = du_i/dx_j`.
-pub fn stress_of_gradient(h: &[[f64; 3]; 3], lame: Lame) -> [f64; 6] {
-    let tr = h[0][0] + h[1][1] + h[2][2];
-    let Lame { lambda, mu } = lame;
-    [
-        lambda * tr + 2.0 * mu * h[0][0],
-        lambda * tr + 2.0 * mu * h[1][1],
-        lambda * tr + 2.0 * mu * h[2][2],
-        mu * (h[1][2] + h[2][1]),
-        mu * (h[0][2] + h[2][0]),
-        mu * (h[0][1] + h[1][0]),
-    ]
-}
+
 
 /// Volume-averaged element stress from the corner displacements `ue`
 /// (`3c + i`, m).
@@ -225,7 +213,7 @@ pub fn element_stress(kind: CellKind, x: &[[f64; 3]], ue: &[f64], lame: Lame) ->
                 }
             }
         }
-        let s = stress_of_gradient(&h, lame);
+        let s = lame.stress(&h);
         let wd = gp.w * det;
         volume += wd;
         for (acc, v) in sum.iter_mut().zip(s) {

@@ -2,11 +2,10 @@
 //! interface merged, no springs), perturbed exactly as CDEM perturbs it,
 //! materials per cell, fixed components and gravity.
 
-use crate::error::{Error, ModelError};
+use crate::error::Error;
 use crate::mesh::adjacency::FaceAdjacency;
-use crate::mesh::perturb::perturb_nodes;
-use crate::mesh::shape::CellDefect;
 use crate::mesh::{Cell, Mesh};
+use crate::model::{cell_materials, perturbed_coordinates, unknown_group};
 use crate::physics::material::{Material, YoungPoisson};
 use crate::scene::{Axis, Scene};
 
@@ -93,45 +92,3 @@ fn axis_index(a: Axis) -> usize {
     }
 }
 
-fn unknown_group(key: String, group: &str, what: &str) -> Error {
-    ModelError::UnknownGroup { key, group: group.to_string(), what: what.to_string() }.into()
-}
-
-/// The scene's node perturbation, exactly as `model::build` applies it.
-fn perturbed_coordinates(mesh: &Mesh, scene: &Scene, adj: &FaceAdjacency) -> Result<Vec<[f64; 3]>, Error> {
-    let p = &scene.perturbation;
-    let mut flat = Vec::new();
-    for (i, name) in p.keep_flat.iter().enumerate() {
-        let g = mesh
-            .groups
-            .iter()
-            .find(|g| &g.name == name && g.dim == 2)
-            .ok_or_else(|| unknown_group(format!("perturbation.keep_flat[{i}]"), name, "surface"))?;
-        flat.push(g);
-    }
-    perturb_nodes(mesh, adj, p.ratio, p.seed, &flat).map_err(|(c, d)| {
-        let (tet, volume) = match d {
-            CellDefect::Inverted { tet, volume } | CellDefect::Degenerate { tet, volume } => (tet, volume),
-        };
-        ModelError::PerturbationInverts { element: mesh.cells[c].tag, tet, volume }.into()
-    })
-}
-
-/// Material index of every cell from the scene's `[[material]]` volume groups.
-fn cell_materials(mesh: &Mesh, scene: &Scene) -> Result<Vec<u16>, Error> {
-    let mut mat = vec![u16::MAX; mesh.cells.len()];
-    for (i, m) in scene.material.iter().enumerate() {
-        let g = mesh
-            .groups
-            .iter()
-            .find(|g| g.name == m.group && g.dim == 3)
-            .ok_or_else(|| unknown_group(format!("material[{i}].group"), &m.group, "volume"))?;
-        for &c in &g.cells {
-            mat[c] = i as u16;
-        }
-    }
-    if let Some(c) = mat.iter().position(|&m| m == u16::MAX) {
-        return Err(ModelError::NoMaterial { element: mesh.cells[c].tag }.into());
-    }
-    Ok(mat)
-}

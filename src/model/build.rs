@@ -6,7 +6,7 @@ use super::{Elements, Gather, Interface, Model};
 use crate::error::{Error, ModelError};
 use crate::mesh::adjacency::{face_key, face_nodes, FaceAdjacency, FaceKey};
 use crate::mesh::perturb::perturb_nodes;
-use crate::mesh::shape::{cross, norm, sub};
+use crate::mesh::shape::{cross, norm, sub, CellDefect};
 use crate::mesh::Mesh;
 use crate::physics::element::element_operators;
 use crate::physics::material::{Material, YoungPoisson};
@@ -131,11 +131,13 @@ pub fn build(mesh: &Mesh, scene: &Scene) -> Result<Model, Error> {
     Ok(Model { x0, mesh_node, mass, fixed, f_ext, elements: el, springs, materials, interfaces, gather, mesh_coords: coords })
 }
 
-fn unknown_group(key: String, group: &str, what: &str) -> Error {
+pub(crate) fn unknown_group(key: String, group: &str, what: &str) -> Error {
     ModelError::UnknownGroup { key, group: group.to_string(), what: what.to_string() }.into()
 }
 
-fn perturbed_coordinates(mesh: &Mesh, scene: &Scene, adj: &FaceAdjacency) -> Result<Vec<[f64; 3]>, Error> {
+/// The scene's node perturbation (shared with the FEM, so both see the same
+/// coordinates); an inversion names the gmsh element.
+pub(crate) fn perturbed_coordinates(mesh: &Mesh, scene: &Scene, adj: &FaceAdjacency) -> Result<Vec<[f64; 3]>, Error> {
     let p = &scene.perturbation;
     let mut flat = Vec::new();
     for (i, name) in p.keep_flat.iter().enumerate() {
@@ -148,8 +150,7 @@ fn perturbed_coordinates(mesh: &Mesh, scene: &Scene, adj: &FaceAdjacency) -> Res
     }
     perturb_nodes(mesh, adj, p.ratio, p.seed, &flat).map_err(|(c, d)| {
         let (tet, volume) = match d {
-            crate::mesh::shape::CellDefect::Inverted { tet, volume } => (tet, volume),
-            crate::mesh::shape::CellDefect::Degenerate { tet, volume } => (tet, volume),
+            CellDefect::Inverted { tet, volume } | CellDefect::Degenerate { tet, volume } => (tet, volume),
         };
         ModelError::PerturbationInverts { element: mesh.cells[c].tag, tet, volume }.into()
     })
@@ -174,7 +175,8 @@ fn classify_interfaces(mesh: &Mesh, scene: &Scene) -> Result<(Vec<Interface>, Ha
     Ok((interfaces, map))
 }
 
-fn cell_materials(mesh: &Mesh, scene: &Scene) -> Result<Vec<u16>, Error> {
+/// Material index of every cell from the scene's `[[material]]` volume groups.
+pub(crate) fn cell_materials(mesh: &Mesh, scene: &Scene) -> Result<Vec<u16>, Error> {
     let mut mat = vec![u16::MAX; mesh.cells.len()];
     for (i, m) in scene.material.iter().enumerate() {
         let g = mesh

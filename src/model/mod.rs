@@ -5,6 +5,7 @@
 mod build;
 
 pub use build::build;
+pub(crate) use build::{cell_materials, perturbed_coordinates, unknown_group};
 
 use crate::mesh::CellKind;
 use crate::physics::element::element_stress;

@@ -120,14 +120,5 @@ pub fn element_stress(grad: &[[f64; 3]], nodes: &[u32], u: &[f64], lame: Lame) -
             }
         }
     }
-    let tr = h[0][0] + h[1][1] + h[2][2];
-    let Lame { lambda, mu } = lame;
-    [
-        lambda * tr + 2.0 * mu * h[0][0],
-        lambda * tr + 2.0 * mu * h[1][1],
-        lambda * tr + 2.0 * mu * h[2][2],
-        mu * (h[1][2] + h[2][1]),
-        mu * (h[0][2] + h[2][0]),
-        mu * (h[0][1] + h[1][0]),
-    ]
+    lame.stress(&h)
 }

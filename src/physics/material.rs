@@ -26,6 +26,21 @@ impl Lame {
     pub fn p_modulus(&self) -> f64 {
         self.lambda + 2.0 * self.mu
     }
+
+    /// Stress (Pa, Voigt xx yy zz yz xz xy) of a displacement gradient
+    /// `h[i][j] = du_i/dx_j`: `sigma = lambda tr(eps) I + 2 mu eps`.
+    pub fn stress(&self, h: &[[f64; 3]; 3]) -> [f64; 6] {
+        let tr = h[0][0] + h[1][1] + h[2][2];
+        let Lame { lambda, mu } = *self;
+        [
+            lambda * tr + 2.0 * mu * h[0][0],
+            lambda * tr + 2.0 * mu * h[1][1],
+            lambda * tr + 2.0 * mu * h[2][2],
+            mu * (h[1][2] + h[2][1]),
+            mu * (h[0][2] + h[2][0]),
+            mu * (h[0][1] + h[1][0]),
+        ]
+    }
 }
 
 /// An element material: elasticity and density (kg/m^3).
