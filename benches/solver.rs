@@ -1,0 +1,111 @@
+//! Whole-solver costs on the paper slope (hexahedra in the name; meshes as in
+//! `benches/kernels.rs`):
+//!
+//! - `step/hex_N`: one `Solver::step` (internal forces, damping, explicit
+//!   update, monitor), throughput `Elements(n_elements)`: element-steps/s;
+//! - `dr_to_1e-5/hex_1000`: dynamic relaxation from rest to the unbalanced
+//!   ratio 1e-5 on the paper's mesh (`Solver::new` + `relax`, the model
+//!   already built), the scene's solver settings (viscous damping, mass
+//!   scaling); 10 samples;
+//! - `build_model/hex_1000`: reading, perturbing and building the CDEM model
+//!   (element operators, springs, gather lists), for the end-to-end total;
+//! - `fem_solve_scene/hex_N`: the implicit FEM reference end to end
+//!   (`cdem::fem::solve_scene`: read and perturb the mesh, assemble, sparse
+//!   Cholesky, solve, residual and stresses); 10 samples.
+//!
+//! DR against FEM on the same mesh: `dr_to_1e-5 / fem_solve_scene`
+//! (or `(build_model + dr_to_1e-5) / fem_solve_scene` end to end).
+
+use std::path::{Path, PathBuf};
+
+use cdem::model::Model;
+use cdem::scene::Scene;
+use cdem::solver::{Solver, State};
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+
+/// Mesh files relative to the slope scene's directory, with their hex counts.
+const MESHES: [(&str, usize); 4] = [
+    ("../../study/slope-h4.msh", 250),
+    ("slope.msh", 1000),
+    ("../../study/slope-h1.msh", 4000),
+    ("../../study/slope-h05.msh", 16000),
+];
+
+fn scene_path() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("verification/cases/slope/slope.toml")
+}
+
+/// The paper slope's scene with another mesh.
+fn slope_scene(mesh: &str) -> Scene {
+    let mut scene = Scene::load(&scene_path()).expect("slope scene loads");
+    scene.mesh.file = mesh.into();
+    scene
+}
+
+fn build(scene: &Scene) -> Model {
+    cdem::run::build_model(scene).expect("slope model builds")
+}
+
+fn step(c: &mut Criterion) {
+    let mut group = c.benchmark_group("solver");
+    for (mesh, n_hex) in MESHES {
+        let scene = slope_scene(mesh);
+        let model = build(&scene);
+        assert_eq!(model.elements.len(), n_hex, "{mesh}: expected {n_hex} hexahedra");
+        let mut solver = Solver::new(&model, scene.solver.clone()).expect("time step");
+        let mut state = State::new(&model);
+        // Start from a loaded, moving state rather than rest.
+        for _ in 0..100 {
+            solver.step(&model, &mut state).expect("stable");
+        }
+        group.throughput(Throughput::Elements(n_hex as u64));
+        group.bench_function(BenchmarkId::new("step", format!("hex_{n_hex}")), |b| {
+            b.iter(|| solver.step(&model, &mut state).expect("stable"))
+        });
+    }
+    group.finish();
+}
+
+fn relax(c: &mut Criterion) {
+    let mut group = c.benchmark_group("solver");
+    group.sample_size(10);
+    let scene = slope_scene("slope.msh");
+    assert_eq!(scene.solver.tolerance, 1e-5, "the slope scene relaxes to 1e-5");
+    let model = build(&scene);
+    let n = model.elements.len();
+    let mut steps = 0;
+    group.bench_function(BenchmarkId::new("dr_to_1e-5", format!("hex_{n}")), |b| {
+        b.iter(|| {
+            let mut solver = Solver::new(&model, scene.solver.clone()).expect("time step");
+            let mut state = State::new(&model);
+            let report = solver.relax(&model, &mut state, usize::MAX, 0, &mut |_, _| {}).expect("stable");
+            assert!(report.converged, "DR did not reach 1e-5 in {} steps", report.steps);
+            steps = report.steps;
+        })
+    });
+    eprintln!("dr_to_1e-5/hex_{n}: {steps} steps");
+    group.bench_function(BenchmarkId::new("build_model", format!("hex_{n}")), |b| b.iter(|| build(&scene)));
+    group.finish();
+}
+
+fn fem(c: &mut Criterion) {
+    let mut group = c.benchmark_group("solver");
+    group.sample_size(10);
+    for (mesh, n_hex) in MESHES {
+        let scene = slope_scene(mesh);
+        let sol = cdem::fem::solve_scene(&scene).expect("FEM solves");
+        let t = sol.timings;
+        eprintln!(
+            "fem hex_{n_hex}: {} free dofs; assemble {:.4} s, factor {:.4} s, solve {:.4} s, post {:.4} s",
+            sol.free_dofs, t.assemble_s, t.factor_s, t.solve_s, t.post_s
+        );
+        group.throughput(Throughput::Elements(n_hex as u64));
+        group.bench_function(BenchmarkId::new("fem_solve_scene", format!("hex_{n_hex}")), |b| {
+            b.iter(|| cdem::fem::solve_scene(&scene).expect("FEM solves"))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, step, relax, fem);
+criterion_main!(benches);
