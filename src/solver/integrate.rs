@@ -28,27 +28,44 @@ pub struct UpdateInput<'a> {
     pub c: f64,
 }
 
-pub fn integrate(inp: &UpdateInput, u: &mut [f64], v: &mut [f64]) -> UpdateReport {
+/// Components per parallel chunk of the update (a multiple of 3).
+pub const CHUNK: usize = 3 * 1024;
+
+/// The update over all components, in parallel chunks of [`CHUNK`]. Each
+/// chunk's partial report goes to its own slot of `partial` (one per chunk,
+/// owned by the solver), and the slots are combined in order, so the result
+/// does not depend on the number of threads.
+pub fn integrate(inp: &UpdateInput, u: &mut [f64], v: &mut [f64], partial: &mut [UpdateReport]) -> UpdateReport {
+    use rayon::prelude::*;
+    u.par_chunks_mut(CHUNK).zip(v.par_chunks_mut(CHUNK)).zip(partial.par_iter_mut()).enumerate().for_each(|(c, ((u, v), rep))| {
+        *rep = integrate_range(inp, c * CHUNK, u, v);
+    });
+    partial.iter().fold(UpdateReport::default(), |a, b| UpdateReport { max_unbalanced: a.max_unbalanced.max(b.max_unbalanced), kinetic: a.kinetic + b.kinetic })
+}
+
+/// The update of the components `first..first + u.len()`.
+fn integrate_range(inp: &UpdateInput, first: usize, u: &mut [f64], v: &mut [f64]) -> UpdateReport {
     let mut rep = UpdateReport::default();
     let dt = inp.dt;
-    for k in 0..u.len() {
+    for (j, (u, v)) in u.iter_mut().zip(v.iter_mut()).enumerate() {
+        let k = first + j;
         if inp.fixed[k] {
-            v[k] = 0.0;
+            *v = 0.0;
             continue;
         }
         let m = inp.mass[k / 3];
         let f = inp.f_ext[k] - inp.f_int[k];
         rep.max_unbalanced = rep.max_unbalanced.max(f.abs());
-        v[k] = match inp.damping {
-            DampingKind::Local => v[k] + dt * (f - local_damping(inp.alpha, f, v[k])) / m,
+        *v = match inp.damping {
+            DampingKind::Local => *v + dt * (f - local_damping(inp.alpha, f, *v)) / m,
             DampingKind::Viscous => {
                 let h = 0.5 * inp.c * dt;
-                ((1.0 - h) * v[k] + dt * f / m) / (1.0 + h)
+                ((1.0 - h) * *v + dt * f / m) / (1.0 + h)
             }
-            DampingKind::Kinetic => v[k] + dt * f / m,
+            DampingKind::Kinetic => *v + dt * f / m,
         };
-        u[k] += dt * v[k];
-        rep.kinetic += 0.5 * m * v[k] * v[k];
+        *u += dt * *v;
+        rep.kinetic += 0.5 * m * *v * *v;
     }
     rep
 }

@@ -83,6 +83,8 @@ pub struct Solver {
     f_elem: Vec<f64>,
     /// Scratch: spring forces on their node `a`.
     f_spring: Vec<[f64; 3]>,
+    /// Scratch: one partial update report per chunk of the integration.
+    partial: Vec<integrate::UpdateReport>,
     /// Failure phase on: breakable springs check eq. 17-18. Only true when
     /// the model has a breakable interface.
     failure: bool,
@@ -104,6 +106,7 @@ impl Solver {
             last_kinetic: 0.0,
             f_elem: vec![0.0; ELEMENT_SLOT * model.elements.len()],
             f_spring: vec![[0.0; 3]; model.springs.len()],
+            partial: vec![integrate::UpdateReport::default(); (3 * model.n_nodes()).div_ceil(integrate::CHUNK)],
             failure: false,
         })
     }
@@ -140,7 +143,7 @@ impl Solver {
             alpha: self.params.local_damping,
             c: self.viscous_c,
         };
-        let rep = integrate(&inp, &mut state.u, &mut state.v);
+        let rep = integrate(&inp, &mut state.u, &mut state.v, &mut self.partial);
         state.step += 1;
         state.time += self.dt;
         let kinetic = self.kinetic_damping(state, rep.kinetic);
