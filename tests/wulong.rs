@@ -158,7 +158,7 @@ fn element_motion(model: &Model, u: &[f64], u0: &[f64], e: usize) -> f64 {
 #[test]
 fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_water() {
     let t0 = std::time::Instant::now();
-    let scene = Scene::load(Path::new(&std::env::var("WULONG").unwrap_or("verification/cases/wulong/wulong.toml".into()))).unwrap();
+    let scene = Scene::load(Path::new("verification/cases/wulong/wulong.toml")).unwrap();
     let params = scene.failure.clone().unwrap();
     let r = run_progressive(&scene, &params, &mut |_, _| {}).unwrap();
     let (model, sp) = (&r.model, &r.model.springs);
@@ -230,6 +230,8 @@ fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_
     let tension = if first_tension.is_empty() { "none" } else { "some" };
     sequence.push(format!("end: {:?}; tension failures: {tension}", r.end));
     println!("open cracks by band at the end: {:?}", BANDS.map(|b| faces.iter().zip(&states[last].open).filter(|(f, o)| **o && band(f.z) == b).count()));
+    let widest = |k: usize| BANDS.map(|b| faces.iter().filter(|f| band(f.z) == b && failed_by(&r, f, r.stages[k].step)).map(|f| opening(model, &r.stage_u[k], f)).fold(0.0, f64::max));
+    println!("widest failed joint by band (m): first stage {:.1e?}, end {:.1e?}", widest(0), widest(last));
     insta::assert_yaml_snapshot!("wulong_failure_sequence", sequence);
 
     // Mean z of the cracks that open at the first crack stage and of those opening later.
