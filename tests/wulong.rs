@@ -231,7 +231,8 @@ fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_
     sequence.push(format!("end: {:?}; tension failures: {tension}", r.end));
     println!("open cracks by band at the end: {:?}", BANDS.map(|b| faces.iter().zip(&states[last].open).filter(|(f, o)| **o && band(f.z) == b).count()));
     let widest = |k: usize| BANDS.map(|b| faces.iter().filter(|f| band(f.z) == b && failed_by(&r, f, r.stages[k].step)).map(|f| opening(model, &r.stage_u[k], f)).fold(0.0, f64::max));
-    println!("widest failed joint by band (m): first stage {:.1e?}, end {:.1e?}", widest(0), widest(last));
+    let mm = |w: [f64; 4]| w.map(|v| format!("{:.1}", 1e3 * v)).join(" / ");
+    println!("widest failed joint toe / lower / middle / upper (mm): first stage {}, end {}", mm(widest(0)), mm(widest(last)));
     insta::assert_yaml_snapshot!("wulong_failure_sequence", sequence);
 
     // Mean z of the cracks that open at the first crack stage and of those opening later.
