@@ -233,6 +233,25 @@ fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_
     let widest = |k: usize| BANDS.map(|b| faces.iter().filter(|f| band(f.z) == b && failed_by(&r, f, r.stages[k].step)).map(|f| opening(model, &r.stage_u[k], f)).fold(0.0, f64::max));
     let mm = |w: [f64; 4]| w.map(|v| format!("{:.1}", 1e3 * v)).join(" / ");
     println!("widest failed joint toe / lower / middle / upper (mm): first stage {}, end {}", mm(widest(0)), mm(widest(last)));
+
+    // Fig. 13 (the mesh) and Fig. 14: u_x, u_z since phase 1 at three stages.
+    std::fs::create_dir_all("target/figures").unwrap();
+    let edges: Vec<Vec<(f64, f64)>> = front_patches(model, |_| 0.0)
+        .into_iter()
+        .map(|p| p.corners.iter().chain(p.corners.first()).copied().collect())
+        .collect();
+    let groups: Vec<Patch> = front_patches(model, |e| model.elements.material[e] as f64);
+    section_contour(Path::new("target/figures/fig13-mesh.png"), "Wulong mesh: interior (0) and near-surface band (1)", "group", &groups, &edges).unwrap();
+    let n = r.stages.len();
+    for (tag, k) in [("early", 0), ("middle", n / 2), ("end", n - 1)] {
+        let du: Vec<f64> = r.stage_u[k].iter().zip(&r.u_elastic).map(|(a, b)| a - b).collect();
+        let cracks: Vec<Vec<(f64, f64)>> = faces.iter().zip(&states[k].open).filter(|(f, o)| **o && f.front.len() == 2).map(|(f, _)| f.front.clone()).collect();
+        for (comp, name) in [(0, "u_x"), (2, "u_z")] {
+            let p: Vec<Patch> = front_patches(model, |e| element_mean_displacement(model, &du, e, comp));
+            let title = format!("Wulong, phase 2 step {}: {name} since phase 1, open cracks", r.stages[k].step);
+            section_contour(Path::new(&format!("target/figures/fig14-{tag}-{name}.png")), &title, &format!("{name} (m)"), &p, &cracks).unwrap();
+        }
+    }
     insta::assert_yaml_snapshot!("wulong_failure_sequence", sequence);
 
     // Mean z of the cracks that open at the first crack stage and of those opening later.
@@ -277,23 +296,4 @@ fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_
     println!("near-surface blocks' motion in the last quarter: median {p50:.2e} m, 90 % {p90:.2e} m, max {pmax:.2e} m");
     assert_ne!(r.end, EndState::GlobalSliding, "no slide without water: the bedding dips less than phi");
     assert!(p90 < 1e-3, "the band stands (90 % of its blocks move less than 1 mm in the last quarter); only detached blocks move");
-
-    // Fig. 13 (the mesh) and Fig. 14: u_x, u_z since phase 1 at three stages.
-    std::fs::create_dir_all("target/figures").unwrap();
-    let edges: Vec<Vec<(f64, f64)>> = front_patches(model, |_| 0.0)
-        .into_iter()
-        .map(|p| p.corners.iter().chain(p.corners.first()).copied().collect())
-        .collect();
-    let groups: Vec<Patch> = front_patches(model, |e| model.elements.material[e] as f64);
-    section_contour(Path::new("target/figures/fig13-mesh.png"), "Wulong mesh: interior (0) and near-surface band (1)", "group", &groups, &edges).unwrap();
-    let n = r.stages.len();
-    for (tag, k) in [("early", 0), ("middle", n / 2), ("end", n - 1)] {
-        let du: Vec<f64> = r.stage_u[k].iter().zip(&r.u_elastic).map(|(a, b)| a - b).collect();
-        let cracks: Vec<Vec<(f64, f64)>> = faces.iter().zip(&states[k].open).filter(|(f, o)| **o && f.front.len() == 2).map(|(f, _)| f.front.clone()).collect();
-        for (comp, name) in [(0, "u_x"), (2, "u_z")] {
-            let p: Vec<Patch> = front_patches(model, |e| element_mean_displacement(model, &du, e, comp));
-            let title = format!("Wulong, phase 2 step {}: {name} since phase 1, open cracks", r.stages[k].step);
-            section_contour(Path::new(&format!("target/figures/fig14-{tag}-{name}.png")), &title, &format!("{name} (m)"), &p, &cracks).unwrap();
-        }
-    }
 }
