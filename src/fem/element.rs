@@ -25,6 +25,7 @@
 //!   centroid (weight 1/6): exact (constant strain; `int N_c = V/4`).
 
 use crate::mesh::shape::CellKind;
+use crate::physics::element::add_isotropic_stiffness;
 use crate::physics::material::Lame;
 
 /// A Gauss point of a reference cell: coordinates and weight.
@@ -163,7 +164,6 @@ pub struct ElementMatrices {
 /// (N/m^3), by the cell's Gauss rule.
 pub fn element_matrices(kind: CellKind, x: &[[f64; 3]], lame: Lame, b: [f64; 3]) -> Result<ElementMatrices, BadJacobian> {
     let n = kind.n_nodes();
-    let Lame { lambda, mu } = lame;
     let mut k = vec![0.0; 9 * n * n];
     let mut f = vec![0.0; 3 * n];
     let mut volume = 0.0;
@@ -178,17 +178,8 @@ pub fn element_matrices(kind: CellKind, x: &[[f64; 3]], lame: Lame, b: [f64; 3])
             for i in 0..3 {
                 f[3 * c + i] += wd * nq[c] * b[i];
             }
-            for d in 0..n {
-                let gcgd = g[c][0] * g[d][0] + g[c][1] * g[d][1] + g[c][2] * g[d][2];
-                for i in 0..3 {
-                    let row = (3 * c + i) * 3 * n + 3 * d;
-                    for j in 0..3 {
-                        let iso = if i == j { mu * gcgd } else { 0.0 };
-                        k[row + j] += wd * (lambda * g[c][i] * g[d][j] + iso + mu * g[c][j] * g[d][i]);
-                    }
-                }
-            }
         }
+        add_isotropic_stiffness(&mut k[..], &g[..n], wd, lame);
     }
     Ok(ElementMatrices { k, f, volume })
 }

@@ -5,9 +5,9 @@
 use crate::error::Error;
 use crate::mesh::adjacency::FaceAdjacency;
 use crate::mesh::{Cell, Mesh};
-use crate::model::{cell_materials, perturbed_coordinates, unknown_group};
-use crate::physics::material::{Material, YoungPoisson};
-use crate::scene::{Axis, Scene};
+use crate::model::{cell_materials, fixed_mesh_nodes, perturbed_coordinates, scene_materials};
+use crate::physics::material::Material;
+use crate::scene::Scene;
 
 /// A linear elastostatic problem on a continuous mesh.
 #[derive(Debug, Clone)]
@@ -42,27 +42,8 @@ impl FemProblem {
         let adj = FaceAdjacency::build(mesh)?;
         let coords = perturbed_coordinates(mesh, scene, &adj)?;
         let cell_material = cell_materials(mesh, scene)?;
-        let materials = scene
-            .material
-            .iter()
-            .map(|m| Material {
-                lame: YoungPoisson { young: m.youngs_modulus, poisson: m.poisson_ratio }.into(),
-                density: m.density,
-            })
-            .collect();
-        let mut fixed = vec![false; 3 * mesh.nodes.len()];
-        for (b, bc) in scene.boundary.iter().enumerate() {
-            let g = mesh
-                .groups
-                .iter()
-                .find(|g| g.name == bc.group && g.dim < 3)
-                .ok_or_else(|| unknown_group(format!("boundary[{b}].group"), &bc.group, "surface"))?;
-            for n in mesh.group_nodes(g) {
-                for axis in &bc.fix {
-                    fixed[3 * n + axis_index(*axis)] = true;
-                }
-            }
-        }
+        let materials = scene_materials(scene);
+        let fixed = fixed_mesh_nodes(mesh, scene)?;
         Ok(Self {
             prescribed: vec![0.0; fixed.len()],
             coords,
@@ -84,11 +65,4 @@ impl FemProblem {
     }
 }
 
-fn axis_index(a: Axis) -> usize {
-    match a {
-        Axis::X => 0,
-        Axis::Y => 1,
-        Axis::Z => 2,
-    }
-}
 

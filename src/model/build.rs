@@ -11,7 +11,7 @@ use crate::mesh::Mesh;
 use crate::physics::element::element_operators;
 use crate::physics::material::{Material, YoungPoisson};
 use crate::physics::spring::{spring_stiffness, Springs};
-use crate::scene::{Axis, JointMode, Scene};
+use crate::scene::{JointMode, Scene};
 
 /// Builds the model: 1. perturb nodes, 2. classify interfaces, 3. make node
 /// copies (merging across merged interfaces), 4. element operators and masses,
@@ -60,14 +60,7 @@ pub fn build(mesh: &Mesh, scene: &Scene) -> Result<Model, Error> {
 
     // 4. Elements.
     let materials_of_cell = cell_materials(mesh, scene)?;
-    let materials: Vec<Material> = scene
-        .material
-        .iter()
-        .map(|m| Material {
-            lame: YoungPoisson { young: m.youngs_modulus, poisson: m.poisson_ratio }.into(),
-            density: m.density,
-        })
-        .collect();
+    let materials = scene_materials(scene);
     let mut el = Elements::default();
     let mut mass = vec![0.0; n_nodes];
     el.offset.push(0);
@@ -97,31 +90,9 @@ pub fn build(mesh: &Mesh, scene: &Scene) -> Result<Model, Error> {
     // 5. Springs on every shared face that is not merged.
     let springs = make_springs(mesh, scene, &adj, &coords, &interfaces, &face_interface, |c, n| node_of_slot[slot(c, n)]);
 
-    // 6. Constraints.
-    let mut copies: Vec<Vec<u32>> = vec![Vec::new(); mesh.nodes.len()];
-    for (i, &n) in mesh_node.iter().enumerate() {
-        copies[n as usize].push(i as u32);
-    }
-    let mut fixed = vec![false; 3 * n_nodes];
-    for (b, bc) in scene.boundary.iter().enumerate() {
-        let g = mesh
-            .groups
-            .iter()
-            .find(|g| g.name == bc.group && g.dim < 3)
-            .ok_or_else(|| unknown_group(format!("boundary[{b}].group"), &bc.group, "surface"))?;
-        for n in mesh.group_nodes(g) {
-            for &i in &copies[n] {
-                for axis in &bc.fix {
-                    let d = match axis {
-                        Axis::X => 0,
-                        Axis::Y => 1,
-                        Axis::Z => 2,
-                    };
-                    fixed[3 * i as usize + d] = true;
-                }
-            }
-        }
-    }
+    // 6. Constraints: every copy of a fixed mesh node is fixed.
+    let mesh_fixed = fixed_mesh_nodes(mesh, scene)?;
+    let fixed = (0..3 * n_nodes).map(|k| mesh_fixed[3 * mesh_node[k / 3] as usize + k % 3]).collect();
 
     // 7. Gravity.
     let g = scene.loads.gravity;
@@ -129,6 +100,33 @@ pub fn build(mesh: &Mesh, scene: &Scene) -> Result<Model, Error> {
 
     let gather = Gather::build(&el, &springs, n_nodes);
     Ok(Model { x0, mesh_node, mass, fixed, f_ext, elements: el, springs, materials, interfaces, gather, mesh_coords: coords })
+}
+
+/// The scene's `[[material]]` sections as materials (in scene order).
+pub(crate) fn scene_materials(scene: &Scene) -> Vec<Material> {
+    scene
+        .material
+        .iter()
+        .map(|m| Material { lame: YoungPoisson { young: m.youngs_modulus, poisson: m.poisson_ratio }.into(), density: m.density })
+        .collect()
+}
+
+/// Fixed components of the mesh nodes (`3 n + d`) from the scene's `[[boundary]]` groups.
+pub(crate) fn fixed_mesh_nodes(mesh: &Mesh, scene: &Scene) -> Result<Vec<bool>, Error> {
+    let mut fixed = vec![false; 3 * mesh.nodes.len()];
+    for (b, bc) in scene.boundary.iter().enumerate() {
+        let g = mesh
+            .groups
+            .iter()
+            .find(|g| g.name == bc.group && g.dim < 3)
+            .ok_or_else(|| unknown_group(format!("boundary[{b}].group"), &bc.group, "surface"))?;
+        for n in mesh.group_nodes(g) {
+            for axis in &bc.fix {
+                fixed[3 * n + axis.index()] = true;
+            }
+        }
+    }
+    Ok(fixed)
 }
 
 pub(crate) fn unknown_group(key: String, group: &str, what: &str) -> Error {

@@ -5,7 +5,7 @@
 mod build;
 
 pub use build::build;
-pub(crate) use build::{cell_materials, perturbed_coordinates, unknown_group};
+pub(crate) use build::{cell_materials, fixed_mesh_nodes, perturbed_coordinates, scene_materials};
 
 use crate::mesh::CellKind;
 use crate::physics::element::element_stress;

@@ -51,7 +51,6 @@ pub fn element_operators(kind: CellKind, corners: &[[f64; 3]], material: &Materi
     let dec = Decomposition::of(kind);
     let n = dec.n_corners;
     let points = dec.points(corners);
-    let Lame { lambda, mu } = material.lame;
     let mut k = vec![0.0; 9 * n * n];
     let mut grad = vec![[0.0; 3]; n];
     let mut point_mass = vec![0.0; points.len()];
@@ -76,20 +75,32 @@ pub fn element_operators(kind: CellKind, corners: &[[f64; 3]], material: &Materi
             for i in 0..3 {
                 grad[c][i] += vt * g[c][i] / volume;
             }
-            for d in 0..n {
-                let gcgd = g[c][0] * g[d][0] + g[c][1] * g[d][1] + g[c][2] * g[d][2];
-                for i in 0..3 {
-                    let row = (3 * c + i) * 3 * n + 3 * d;
-                    for j in 0..3 {
-                        let iso = if i == j { mu * gcgd } else { 0.0 };
-                        k[row + j] += vt * (lambda * g[c][i] * g[d][j] + iso + mu * g[d][i] * g[c][j]);
-                    }
+        }
+        add_isotropic_stiffness(&mut k, &g, vt, material.lame);
+    }
+    let mass = (0..n).map(|c| (0..points.len()).map(|p| dec.weights[p][c] * point_mass[p]).sum()).collect();
+    Ok(ElementOperators { k, grad, mass, volume })
+}
+
+/// Adds `w (lambda g_c g_d^T + mu (g_c . g_d) I + mu g_d g_c^T)` to every
+/// corner block `(c, d)` of `k` (`3n x 3n`, row-major): the stiffness of a
+/// linear-elastic point (a tetrahedron, or a Gauss point of weight `w`) whose
+/// displacement gradient is `sum_c u_c (x) g_c`.
+pub fn add_isotropic_stiffness(k: &mut [f64], g: &[[f64; 3]], w: f64, lame: Lame) {
+    let n = g.len();
+    let Lame { lambda, mu } = lame;
+    for c in 0..n {
+        for d in 0..n {
+            let gcgd = g[c][0] * g[d][0] + g[c][1] * g[d][1] + g[c][2] * g[d][2];
+            for i in 0..3 {
+                let row = (3 * c + i) * 3 * n + 3 * d;
+                for j in 0..3 {
+                    let iso = if i == j { mu * gcgd } else { 0.0 };
+                    k[row + j] += w * (lambda * g[c][i] * g[d][j] + iso + mu * g[d][i] * g[c][j]);
                 }
             }
         }
     }
-    let mass = (0..n).map(|c| (0..points.len()).map(|p| dec.weights[p][c] * point_mass[p]).sum()).collect();
-    Ok(ElementOperators { k, grad, mass, volume })
 }
 
 /// Eq. 12: the deformation force of one element, `f_e = K_e u_e`, written to

@@ -171,6 +171,17 @@ pub enum Axis {
     Z,
 }
 
+impl Axis {
+    /// Component index: x 0, y 1, z 2.
+    pub fn index(self) -> usize {
+        match self {
+            Axis::X => 0,
+            Axis::Y => 1,
+            Axis::Z => 2,
+        }
+    }
+}
+
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Boundary {
