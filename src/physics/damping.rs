@@ -32,8 +32,14 @@ pub fn rayleigh_omega2(u: &[f64], f_int: &[f64], mass: &[f64]) -> f64 {
             den += m * u[k] * u[k];
         }
     }
-    if den > 0.0 && num > 0.0 {
-        num / den
+    rayleigh_omega2_with(num, den)
+}
+
+/// The Rayleigh quotient `(u . K u) / (u . M u)` from its two parts (0 if
+/// either is not positive).
+pub fn rayleigh_omega2_with(u_k_u: f64, u_m_u: f64) -> f64 {
+    if u_m_u > 0.0 && u_k_u > 0.0 {
+        u_k_u / u_m_u
     } else {
         0.0
     }

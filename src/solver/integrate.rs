@@ -1,23 +1,35 @@
 //! Eq. 13-14: damping force and the explicit update, per component:
 //! `a = (f_ext - f_int - f_d) / m`, `v += a dt`, `u += v dt`; fixed components
-//! keep `v = 0`. Returns the largest unbalanced force on a free component
-//! (the residual used for convergence) and the kinetic energy.
+//! keep `v = 0`. With node-block masses `a = (M^-1 f)_k` (viscous and
+//! kinetic damping only). Returns the largest unbalanced force on a free
+//! component (the residual used for convergence) and the kinetic energy.
 
 use crate::physics::damping::local_damping;
+use crate::solver::block_mass::BlockMass;
 use crate::solver::params::DampingKind;
+
+/// The inertial masses of the update.
+#[derive(Clone, Copy)]
+pub enum Masses<'a> {
+    /// One mass per node.
+    Lumped(&'a [f64]),
+    /// One dense block per mesh node ([`BlockMass`]).
+    Block(&'a BlockMass),
+}
 
 /// What one update measured.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct UpdateReport {
     /// `max |f_ext - f_int|` over free components (N).
     pub max_unbalanced: f64,
-    /// `sum m v^2 / 2` with the inertial masses (J).
+    /// `sum m v^2 / 2` with the inertial masses (J); with block masses, with
+    /// their diagonal (an estimate, used to detect non-finite state).
     pub kinetic: f64,
 }
 
 /// Everything the update reads that does not change in a step.
 pub struct UpdateInput<'a> {
-    pub mass: &'a [f64],
+    pub mass: Masses<'a>,
     pub fixed: &'a [bool],
     pub f_ext: &'a [f64],
     pub f_int: &'a [f64],
@@ -43,29 +55,37 @@ pub fn integrate(inp: &UpdateInput, u: &mut [f64], v: &mut [f64], partial: &mut 
     partial.iter().fold(UpdateReport::default(), |a, b| UpdateReport { max_unbalanced: a.max_unbalanced.max(b.max_unbalanced), kinetic: a.kinetic + b.kinetic })
 }
 
-/// The update of the components `first..first + u.len()`.
+/// The update of the nodes `first / 3..(first + u.len()) / 3`.
 fn integrate_range(inp: &UpdateInput, first: usize, u: &mut [f64], v: &mut [f64]) -> UpdateReport {
     let mut rep = UpdateReport::default();
     let dt = inp.dt;
-    for (j, (u, v)) in u.iter_mut().zip(v.iter_mut()).enumerate() {
-        let k = first + j;
-        if inp.fixed[k] {
-            *v = 0.0;
-            continue;
-        }
-        let m = inp.mass[k / 3];
-        let f = inp.f_ext[k] - inp.f_int[k];
-        rep.max_unbalanced = rep.max_unbalanced.max(f.abs());
-        *v = match inp.damping {
-            DampingKind::Local => *v + dt * (f - local_damping(inp.alpha, f, *v)) / m,
-            DampingKind::Viscous => {
-                let h = 0.5 * inp.c * dt;
-                ((1.0 - h) * *v + dt * f / m) / (1.0 + h)
-            }
-            DampingKind::Kinetic => *v + dt * f / m,
+    let unbalanced = |k: usize| if inp.fixed[k] { 0.0 } else { inp.f_ext[k] - inp.f_int[k] };
+    for (j, (u, v)) in u.chunks_exact_mut(3).zip(v.chunks_exact_mut(3)).enumerate() {
+        let i = first / 3 + j;
+        // Per component: the mass and the velocity change `dt M^-1 f`.
+        let (m, dv) = match inp.mass {
+            Masses::Lumped(m) => ([m[i]; 3], [0, 1, 2].map(|d| dt * unbalanced(3 * i + d) / m[i])),
+            Masses::Block(b) => (b.diagonal[i], b.accelerate(i, unbalanced).map(|a| dt * a)),
         };
-        *u += dt * *v;
-        rep.kinetic += 0.5 * m * *v * *v;
+        for d in 0..3 {
+            let k = 3 * i + d;
+            if inp.fixed[k] {
+                v[d] = 0.0;
+                continue;
+            }
+            let f = unbalanced(k);
+            rep.max_unbalanced = rep.max_unbalanced.max(f.abs());
+            v[d] = match inp.damping {
+                DampingKind::Local => v[d] + dt * (f - local_damping(inp.alpha, f, v[d])) / m[d],
+                DampingKind::Viscous => {
+                    let h = 0.5 * inp.c * dt;
+                    ((1.0 - h) * v[d] + dv[d]) / (1.0 + h)
+                }
+                DampingKind::Kinetic => v[d] + dv[d],
+            };
+            u[d] += dt * v[d];
+            rep.kinetic += 0.5 * m[d] * v[d] * v[d];
+        }
     }
     rep
 }

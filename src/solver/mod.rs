@@ -5,6 +5,7 @@
 //! 2. update: damping (eq. 13) and explicit integration (eq. 14) with fixities;
 //! 3. monitor: convergence ratio, energies, non-finite state and blow-up.
 
+pub mod block_mass;
 pub mod forces;
 pub mod integrate;
 pub mod params;
@@ -16,10 +17,11 @@ use serde::Serialize;
 
 use crate::error::SolveError;
 use crate::model::Model;
-use crate::physics::damping::rayleigh_omega2;
+use crate::physics::damping::{rayleigh_omega2, rayleigh_omega2_with};
 use crate::model::ELEMENT_SLOT;
 use crate::physics::spring::SpringState;
-use integrate::{integrate, UpdateInput};
+use block_mass::BlockMass;
+use integrate::{integrate, Masses, UpdateInput};
 
 /// What changes during a run, in flat arrays indexed `3 i + d`.
 #[derive(Debug, Clone)]
@@ -88,6 +90,11 @@ pub struct Solver {
     /// Failure phase on: breakable springs check eq. 17-18. Only true when
     /// the model has a breakable interface.
     failure: bool,
+    /// Node-block masses (`params.block_mass`, elastic phase), used instead
+    /// of `mass` by the update, the damping and the kinetic energy.
+    block: Option<BlockMass>,
+    /// Scratch: one value per node (block-mass quadratic forms).
+    per_node: Vec<f64>,
 }
 
 impl Solver {
@@ -96,6 +103,10 @@ impl Solver {
         let amplification = if params.damping == DampingKind::Local { 1.0 + params.local_damping } else { 1.0 };
         let (mass, dt) = timestep::masses_and_step(model, &rows, params.safety, params.mass_scaling, amplification)
             .ok_or(SolveError::NoTimeStep)?;
+        let block = match params.uses_block_mass() {
+            true => Some(BlockMass::new(model, amplification / (4.0 * params.safety * params.safety))?),
+            false => None,
+        };
         let f_ext_max = model.f_ext.iter().zip(&model.fixed).filter(|(_, &fx)| !fx).map(|(f, _)| f.abs()).fold(0.0, f64::max);
         Ok(Self {
             params,
@@ -108,6 +119,8 @@ impl Solver {
             f_spring: vec![[0.0; 3]; model.springs.len()],
             partial: vec![integrate::UpdateReport::default(); (3 * model.n_nodes()).div_ceil(integrate::CHUNK)],
             failure: false,
+            block,
+            per_node: vec![0.0; model.n_nodes()],
         })
     }
 
@@ -115,6 +128,17 @@ impl Solver {
     /// without breakable interfaces, which then does no failure work.
     pub fn set_failure(&mut self, model: &Model, on: bool) {
         self.failure = on && model.interfaces.iter().any(|i| i.strength.is_some());
+        if self.failure {
+            self.block = None;
+        }
+    }
+
+    /// Kinetic energy `v . M v / 2` with the inertial masses (J).
+    pub fn kinetic_energy(&mut self, state: &State) -> f64 {
+        match &self.block {
+            Some(b) => 0.5 * b.quadratic(&state.v, &mut self.per_node),
+            None => (0..state.v.len()).map(|k| 0.5 * self.mass[k / 3] * state.v[k] * state.v[k]).sum(),
+        }
     }
 
     /// Stage 1: internal forces, eq. 12 (elements) and eq. 15 (springs),
@@ -134,7 +158,10 @@ impl Solver {
         self.internal_forces(model, state);
         self.update_damping(state);
         let inp = UpdateInput {
-            mass: &self.mass,
+            mass: match &self.block {
+                Some(b) => Masses::Block(b),
+                None => Masses::Lumped(&self.mass),
+            },
             fixed: &model.fixed,
             f_ext: &model.f_ext,
             f_int: &state.f_int,
@@ -146,7 +173,13 @@ impl Solver {
         let rep = integrate(&inp, &mut state.u, &mut state.v, &mut self.partial);
         state.step += 1;
         state.time += self.dt;
-        let kinetic = self.kinetic_damping(state, rep.kinetic);
+        let mut kinetic = self.kinetic_damping(state, rep.kinetic);
+        if !kinetic.is_finite() {
+            return Err(self.non_finite(state));
+        }
+        if self.block.is_some() && state.step % 16 == 0 {
+            kinetic = self.kinetic_energy(state);
+        }
         self.monitor(model, state, kinetic)?;
         Ok((rep.max_unbalanced, kinetic))
     }
@@ -155,7 +188,10 @@ impl Solver {
     /// refreshed every 10 steps.
     fn update_damping(&mut self, state: &State) {
         if self.params.damping == DampingKind::Viscous && state.step % 10 == 0 {
-            let w2 = rayleigh_omega2(&state.u, &state.f_int, &self.mass);
+            let w2 = match &self.block {
+                Some(b) => rayleigh_omega2_with(dot(&state.u, &state.f_int), b.quadratic(&state.u, &mut self.per_node)),
+                None => rayleigh_omega2(&state.u, &state.f_int, &self.mass),
+            };
             if w2 > 0.0 {
                 self.viscous_c = 2.0 * w2.sqrt();
             }
@@ -177,11 +213,15 @@ impl Solver {
         kinetic
     }
 
+    fn non_finite(&self, state: &State) -> SolveError {
+        let node = (0..state.u.len()).find(|&k| !state.u[k].is_finite() || !state.v[k].is_finite()).unwrap_or(0) / 3;
+        SolveError::NonFinite { step: state.step, node }
+    }
+
     /// Stage 3: non-finite state and energy blow-up are errors naming the node.
     fn monitor(&self, model: &Model, state: &State, kinetic: f64) -> Result<(), SolveError> {
         if !kinetic.is_finite() {
-            let node = (0..state.u.len()).find(|&k| !state.u[k].is_finite() || !state.v[k].is_finite()).unwrap_or(0) / 3;
-            return Err(SolveError::NonFinite { step: state.step, node });
+            return Err(self.non_finite(state));
         }
         if kinetic > 0.0 && state.step % 16 == 0 {
             let work = dot(&model.f_ext, &state.u);
@@ -238,6 +278,7 @@ impl Solver {
             ratio = self.ratio(unbalanced);
             converged = ratio < self.params.tolerance;
             if state.step % history_every == 0 || converged {
+                let kinetic = if self.block.is_some() { self.kinetic_energy(state) } else { kinetic };
                 history.push(self.history_row(model, state, kinetic, ratio));
             }
             if observe_every > 0 && state.step % observe_every == 0 {

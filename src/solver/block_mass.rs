@@ -1,0 +1,195 @@
+//! Node-block mass scaling: the fictitious mass of dynamic relaxation as one
+//! dense block per mesh node, coupling all the node copies made from it.
+//!
+//! With a lumped (diagonal) scaled mass, the explicit step is set by the
+//! stiffest joint springs while convergence is set by the softest mode of the
+//! rock mass, so the step count grows with the square root of the
+//! spring-to-rock stiffness ratio (about 170 on the paper slope). The springs
+//! of a joint only couple the copies of one mesh node, so a mass that contains
+//! them exactly removes that ratio:
+//!
+//! `M_c = s (B_c + D_c)`, where `B_c` is the block of the assembled stiffness
+//! `K` on the copies of mesh node `c` (the springs between them and each
+//! copy's own 3x3 element and spring blocks) and `D_c` is diagonal, the
+//! absolute row sums of the entries of `K` outside the block. For every `x`,
+//! `x.K x = x.B x + x.O x <= x.B x + x.D x` (off-block part `O`,
+//! `|O_ij x_i x_j| <= |O_ij| (x_i^2 + x_j^2) / 2`), so `K <= B + D` and the
+//! largest eigenvalue of `M^-1 K` is at most `1 / s`. With
+//! `s = 1 / (4 safety^2)` and `dt = 1` every mode is at `safety` of its
+//! stability limit, the same guarantee the lumped Gershgorin masses give.
+//! Fixed components get a unit row and column (their velocity stays zero).
+//!
+//! Used in the elastic phase only: the blocks are built from the intact
+//! springs, and a broken spring only lowers `K`, so they stay stable, but
+//! they would couple the inertia of copies that have separated.
+
+use nalgebra::DMatrix;
+use rayon::prelude::*;
+
+use crate::error::SolveError;
+use crate::model::Model;
+
+/// The blocks, stored by model node: node `i` owns the 3 rows of its
+/// cluster's mass and inverse mass, `3 x 3 n_c` each, at `row[i]`.
+#[derive(Debug, Clone)]
+pub struct BlockMass {
+    /// Cluster `c` holds the model nodes `nodes[ptr[c]..ptr[c + 1]]`.
+    ptr: Vec<u32>,
+    nodes: Vec<u32>,
+    cluster: Vec<u32>,
+    row: Vec<usize>,
+    mass: Vec<f64>,
+    inverse: Vec<f64>,
+    /// The diagonal of the mass, per node.
+    pub diagonal: Vec<[f64; 3]>,
+}
+
+impl BlockMass {
+    /// Blocks of `scale (B + D)` for the model's elastic stiffness.
+    pub fn new(model: &Model, scale: f64) -> Result<Self, SolveError> {
+        let n_nodes = model.n_nodes();
+        let n_mesh = model.mesh_node.iter().map(|&m| m as usize + 1).max().unwrap_or(0);
+        // Clusters: the copies of each mesh node, in model-node order.
+        let mut ptr = vec![0u32; n_mesh + 1];
+        for &m in &model.mesh_node {
+            ptr[m as usize + 1] += 1;
+        }
+        for c in 0..n_mesh {
+            ptr[c + 1] += ptr[c];
+        }
+        let mut fill = ptr.clone();
+        let mut nodes = vec![0u32; n_nodes];
+        let mut local = vec![0usize; n_nodes];
+        for (i, &m) in model.mesh_node.iter().enumerate() {
+            let slot = &mut fill[m as usize];
+            local[i] = (*slot - ptr[m as usize]) as usize;
+            nodes[*slot as usize] = i as u32;
+            *slot += 1;
+        }
+        let cluster: Vec<u32> = model.mesh_node.clone();
+        let size = |c: usize| 3 * (ptr[c + 1] - ptr[c]) as usize;
+        let size_of_cluster = |i: usize| (ptr[model.mesh_node[i] as usize + 1] - ptr[model.mesh_node[i] as usize]) as usize;
+        let mut blocks: Vec<DMatrix<f64>> = (0..n_mesh).map(|c| DMatrix::zeros(size(c), size(c))).collect();
+        let mut off = vec![0.0; 3 * n_nodes];
+        // Adds the 3x3 block `k(a, b)` of K between nodes i and j.
+        let mut add = |i: usize, j: usize, k: &dyn Fn(usize, usize) -> f64| {
+            let c = cluster[i] as usize;
+            if cluster[j] as usize == c {
+                let b = &mut blocks[c];
+                for a in 0..3 {
+                    for d in 0..3 {
+                        b[(3 * local[i] + a, 3 * local[j] + d)] += k(a, d);
+                    }
+                }
+            } else {
+                for a in 0..3 {
+                    off[3 * i + a] += (0..3).map(|d| k(a, d).abs()).sum::<f64>();
+                }
+            }
+        };
+        let el = &model.elements;
+        for e in 0..el.len() {
+            let corners = el.corners(e);
+            let k = el.stiffness(e);
+            let n = 3 * corners.len();
+            for (p, &i) in corners.iter().enumerate() {
+                for (q, &j) in corners.iter().enumerate() {
+                    add(i as usize, j as usize, &|a, d| k[(3 * p + a) * n + 3 * q + d]);
+                }
+            }
+        }
+        let sp = &model.springs;
+        for s in 0..sp.len() {
+            let (n, kn, ks) = (sp.normal[s], sp.kn[s], sp.ks[s]);
+            let block = |a: usize, d: usize| {
+                let nn = n[a] * n[d];
+                kn * nn + ks * (if a == d { 1.0 } else { 0.0 } - nn)
+            };
+            let (i, j) = (sp.a[s] as usize, sp.b[s] as usize);
+            add(i, i, &block);
+            add(j, j, &block);
+            add(i, j, &|a, d| -block(a, d));
+            add(j, i, &|a, d| -block(a, d));
+        }
+        for (i, &c) in cluster.iter().enumerate() {
+            let b = &mut blocks[c as usize];
+            for a in 0..3 {
+                let r = 3 * local[i] + a;
+                b[(r, r)] += off[3 * i + a];
+                if model.fixed[3 * i + a] {
+                    b.row_mut(r).fill(0.0);
+                    b.column_mut(r).fill(0.0);
+                    b[(r, r)] = 1.0 / scale;
+                }
+            }
+        }
+        let mut row = Vec::with_capacity(n_nodes);
+        let mut mass = Vec::new();
+        let mut inverse = Vec::new();
+        for b in blocks {
+            let b = b * scale;
+            let inv = b.clone().cholesky().ok_or(SolveError::NoTimeStep)?.inverse();
+            for l in 0..b.nrows() / 3 {
+                for r in 3 * l..3 * l + 3 {
+                    mass.extend(b.row(r).iter());
+                    inverse.extend(inv.row(r).iter());
+                }
+            }
+        }
+        // Rows were stored in cluster order; index them by model node.
+        let mut at = 0;
+        let mut row_of_slot = vec![0usize; n_nodes];
+        for c in 0..n_mesh {
+            for slot in ptr[c] as usize..ptr[c + 1] as usize {
+                row_of_slot[slot] = at;
+                at += 9 * (ptr[c + 1] - ptr[c]) as usize;
+            }
+        }
+        let mut slot_of = vec![0usize; n_nodes];
+        for (slot, &i) in nodes.iter().enumerate() {
+            slot_of[i as usize] = slot;
+        }
+        row.extend((0..n_nodes).map(|i| row_of_slot[slot_of[i]]));
+        let diagonal = (0..n_nodes).map(|i| [0, 1, 2].map(|a| mass[row[i] + a * 3 * size_of_cluster(i) + 3 * local[i] + a])).collect();
+        Ok(Self { ptr, nodes, cluster, row, mass, inverse, diagonal })
+    }
+
+    fn cluster_nodes(&self, i: usize) -> &[u32] {
+        let c = self.cluster[i] as usize;
+        &self.nodes[self.ptr[c] as usize..self.ptr[c + 1] as usize]
+    }
+
+    /// `(B x)_i` for node `i`, with `B` the mass or its inverse.
+    #[inline]
+    fn apply(&self, blocks: &[f64], i: usize, x: impl Fn(usize) -> f64) -> [f64; 3] {
+        let nodes = self.cluster_nodes(i);
+        let w = 3 * nodes.len();
+        let rows = &blocks[self.row[i]..self.row[i] + 3 * w];
+        let mut y = [0.0; 3];
+        for (j, &node) in nodes.iter().enumerate() {
+            for d in 0..3 {
+                let xj = x(3 * node as usize + d);
+                for (a, ya) in y.iter_mut().enumerate() {
+                    *ya += rows[a * w + 3 * j + d] * xj;
+                }
+            }
+        }
+        y
+    }
+
+    /// Acceleration of node `i`, `(M^-1 f)_i`, for the force `f(k)`.
+    #[inline]
+    pub fn accelerate(&self, i: usize, f: impl Fn(usize) -> f64) -> [f64; 3] {
+        self.apply(&self.inverse, i, f)
+    }
+
+    /// `x . M x`, each node's share written to `per_node` (one per node)
+    /// and summed in node order, so the result is thread-count independent.
+    pub fn quadratic(&self, x: &[f64], per_node: &mut [f64]) -> f64 {
+        per_node.par_iter_mut().with_min_len(1024).enumerate().for_each(|(i, q)| {
+            let y = self.apply(&self.mass, i, |k| x[k]);
+            *q = (0..3).map(|a| x[3 * i + a] * y[a]).sum::<f64>();
+        });
+        per_node.iter().sum()
+    }
+}
