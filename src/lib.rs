@@ -24,6 +24,7 @@ pub mod lem;
 pub mod mesh;
 pub mod model;
 pub mod output;
+pub mod perf;
 pub mod physics;
 pub mod progressive;
 pub mod reproduce;

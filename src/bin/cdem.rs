@@ -48,6 +48,19 @@ enum Command {
         #[arg(long, default_value = "study")]
         out: PathBuf,
     },
+    /// Performance: step bandwidth against stream, DR against FEM, LEM against pySlope, the
+    /// damping table and cost against size (gmsh for refine 7, 10): DIR/perf.md and CSVs.
+    /// Run from the repository root; about 20 minutes with the defaults.
+    Perf {
+        #[arg(long, default_value = "perf")]
+        out: PathBuf,
+        /// Resolutions of the scaling study (`refine` of slope.geo: 1000 refine^2 elements).
+        #[arg(long, value_delimiter = ',', default_values_t = vec![0.5, 1.0, 2.0, 4.0, 7.0, 10.0])]
+        refine: Vec<f64>,
+        /// Skip the damping table (about 3 minutes).
+        #[arg(long)]
+        no_damping: bool,
+    },
     /// Run every paper case and write DIR/report.md with the validation table and figures.
     Reproduce {
         #[arg(long, default_value = "reproduce")]
@@ -77,6 +90,10 @@ fn main() -> ExitCode {
         Command::Study { out } => cdem::study::run_study(&out, &mut |what| eprintln!("study: {what}")).map(|rows| {
             eprintln!("study: {} points -> {}", rows.len(), out.join("study.csv").display());
         }),
+        Command::Perf { out, refine, no_damping } => {
+            let opts = cdem::perf::PerfOptions { damping: !no_damping, refine, ..Default::default() };
+            cdem::perf::run_perf(std::path::Path::new("."), &out, &opts, &mut |what| eprintln!("perf: {what}")).map(|md| println!("{md}"))
+        }
         Command::Reproduce { out, regenerate } => cdem::reproduce::reproduce(&out, regenerate, &mut |what| eprintln!("reproduce: {what}")),
     };
     match result {

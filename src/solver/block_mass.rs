@@ -37,6 +37,8 @@ pub struct BlockMass {
     ptr: Vec<u32>,
     nodes: Vec<u32>,
     cluster: Vec<u32>,
+    /// Model node -> its slot in `nodes` (the rows are stored in slot order).
+    slot_of: Vec<u32>,
     row: Vec<usize>,
     mass: Vec<f64>,
     inverse: Vec<f64>,
@@ -151,7 +153,8 @@ impl BlockMass {
         }
         row.extend((0..n_nodes).map(|i| row_of_slot[slot_of[i]]));
         let diagonal = (0..n_nodes).map(|i| [0, 1, 2].map(|a| mass[row[i] + a * 3 * size_of_cluster(i) + 3 * local[i] + a])).collect();
-        Ok(Self { ptr, nodes, cluster, row, mass, inverse, diagonal })
+        let slot_of = slot_of.iter().map(|&s| s as u32).collect();
+        Ok(Self { ptr, nodes, cluster, slot_of, row, mass, inverse, diagonal })
     }
 
     fn cluster_nodes(&self, i: usize) -> &[u32] {
@@ -181,6 +184,39 @@ impl BlockMass {
     #[inline]
     pub fn accelerate(&self, i: usize, f: impl Fn(usize) -> f64) -> [f64; 3] {
         self.apply(&self.inverse, i, f)
+    }
+
+    /// All accelerations `M^-1 f` in two parallel passes, for the update:
+    /// `f` is gathered once into `r` in slot order (each cluster's copies
+    /// contiguous), then each slot's 3 rows of `M^-1` multiply its
+    /// cluster's part of `r` into `acc` (slot order; read it with
+    /// [`Self::acceleration`]). Each output has one writer: no reduction,
+    /// the result does not depend on the thread count.
+    pub fn accelerations(&self, f: impl Fn(usize) -> f64 + Sync, r: &mut [f64], acc: &mut [f64]) {
+        r.par_chunks_mut(3).with_min_len(512).enumerate().for_each(|(slot, r)| {
+            let i = self.nodes[slot] as usize;
+            for (d, r) in r.iter_mut().enumerate() {
+                *r = f(3 * i + d);
+            }
+        });
+        let r = &*r;
+        acc.par_chunks_mut(3).with_min_len(512).enumerate().for_each(|(slot, y)| {
+            let c = self.cluster[self.nodes[slot] as usize] as usize;
+            let (lo, hi) = (3 * self.ptr[c] as usize, 3 * self.ptr[c + 1] as usize);
+            let w = hi - lo;
+            let start = self.row[self.nodes[slot] as usize];
+            let rows = &self.inverse[start..start + 3 * w];
+            for (a, y) in y.iter_mut().enumerate() {
+                *y = rows[a * w..(a + 1) * w].iter().zip(&r[lo..hi]).map(|(m, x)| m * x).sum();
+            }
+        });
+    }
+
+    /// Node `i`'s acceleration in the output of [`Self::accelerations`].
+    #[inline]
+    pub fn acceleration(&self, acc: &[f64], i: usize) -> [f64; 3] {
+        let s = 3 * self.slot_of[i] as usize;
+        [acc[s], acc[s + 1], acc[s + 2]]
     }
 
     /// `x . M x`, each node's share written to `per_node` (one per node)

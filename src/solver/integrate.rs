@@ -13,8 +13,10 @@ use crate::solver::params::DampingKind;
 pub enum Masses<'a> {
     /// One mass per node.
     Lumped(&'a [f64]),
-    /// One dense block per mesh node ([`BlockMass`]).
-    Block(&'a BlockMass),
+    /// One dense block per mesh node ([`BlockMass`]), with the
+    /// accelerations `M^-1 (f_ext - f_int)` of this step already computed
+    /// ([`BlockMass::accelerations`]).
+    Block(&'a BlockMass, &'a [f64]),
 }
 
 /// What one update measured.
@@ -65,7 +67,7 @@ fn integrate_range(inp: &UpdateInput, first: usize, u: &mut [f64], v: &mut [f64]
         // Per component: the mass and the velocity change `dt M^-1 f`.
         let (m, dv) = match inp.mass {
             Masses::Lumped(m) => ([m[i]; 3], [0, 1, 2].map(|d| dt * unbalanced(3 * i + d) / m[i])),
-            Masses::Block(b) => (b.diagonal[i], b.accelerate(i, unbalanced).map(|a| dt * a)),
+            Masses::Block(b, acc) => (b.diagonal[i], b.acceleration(acc, i).map(|a| dt * a)),
         };
         for d in 0..3 {
             let k = 3 * i + d;

@@ -95,6 +95,10 @@ pub struct Solver {
     block: Option<BlockMass>,
     /// Scratch: one value per node (block-mass quadratic forms).
     per_node: Vec<f64>,
+    /// Scratch for block masses: the unbalanced force and the acceleration,
+    /// per component in cluster-slot order.
+    slot_force: Vec<f64>,
+    slot_acc: Vec<f64>,
 }
 
 impl Solver {
@@ -119,8 +123,10 @@ impl Solver {
             f_spring: vec![[0.0; 3]; model.springs.len()],
             partial: vec![integrate::UpdateReport::default(); (3 * model.n_nodes()).div_ceil(integrate::CHUNK)],
             failure: false,
-            block,
             per_node: vec![0.0; model.n_nodes()],
+            slot_force: vec![0.0; if block.is_some() { 3 * model.n_nodes() } else { 0 }],
+            slot_acc: vec![0.0; if block.is_some() { 3 * model.n_nodes() } else { 0 }],
+            block,
         })
     }
 
@@ -157,9 +163,13 @@ impl Solver {
     pub fn step(&mut self, model: &Model, state: &mut State) -> Result<(f64, f64), SolveError> {
         self.internal_forces(model, state);
         self.update_damping(state);
+        if let Some(b) = &self.block {
+            let (fixed, f_ext, f_int) = (&model.fixed, &model.f_ext, &state.f_int);
+            b.accelerations(|k| if fixed[k] { 0.0 } else { f_ext[k] - f_int[k] }, &mut self.slot_force, &mut self.slot_acc);
+        }
         let inp = UpdateInput {
             mass: match &self.block {
-                Some(b) => Masses::Block(b),
+                Some(b) => Masses::Block(b, &self.slot_acc),
                 None => Masses::Lumped(&self.mass),
             },
             fixed: &model.fixed,
