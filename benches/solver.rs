@@ -2,11 +2,14 @@
 //! `benches/kernels.rs`):
 //!
 //! - `step/hex_N`: one `Solver::step` (internal forces, damping, explicit
-//!   update, monitor), throughput `Elements(n_elements)`: element-steps/s;
+//!   update, monitor) with the scene's settings (node-block masses),
+//!   throughput `Elements(n_elements)`: element-steps/s; `step_lumped/hex_N`
+//!   the same with lumped masses (`block_mass = false`);
 //! - `dr_to_1e-5/hex_1000`: dynamic relaxation from rest to the unbalanced
 //!   ratio 1e-5 on the paper's mesh (`Solver::new` + `relax`, the model
 //!   already built), the scene's solver settings (viscous damping, mass
-//!   scaling); 10 samples;
+//!   scaling, node-block masses); `dr_to_1e-5_lumped/hex_1000` with lumped
+//!   masses; 10 samples;
 //! - `build_model/hex_1000`: reading, perturbing and building the CDEM model
 //!   (element operators, springs, gather lists), for the end-to-end total;
 //! - `fem_solve_scene/hex_N`: the implicit FEM reference end to end
@@ -20,7 +23,7 @@ use std::path::{Path, PathBuf};
 
 use cdem::model::Model;
 use cdem::scene::Scene;
-use cdem::solver::{Solver, State};
+use cdem::solver::{Solver, SolverParams, State};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 
 /// Mesh files relative to the slope scene's directory, with their hex counts.
@@ -52,16 +55,19 @@ fn step(c: &mut Criterion) {
         let scene = slope_scene(mesh);
         let model = build(&scene);
         assert_eq!(model.elements.len(), n_hex, "{mesh}: expected {n_hex} hexahedra");
-        let mut solver = Solver::new(&model, scene.solver.clone()).expect("time step");
-        let mut state = State::new(&model);
-        // Start from a loaded, moving state rather than rest.
-        for _ in 0..100 {
-            solver.step(&model, &mut state).expect("stable");
-        }
         group.throughput(Throughput::Elements(n_hex as u64));
-        group.bench_function(BenchmarkId::new("step", format!("hex_{n_hex}")), |b| {
-            b.iter(|| solver.step(&model, &mut state).expect("stable"))
-        });
+        for (name, block_mass) in [("step", None), ("step_lumped", Some(false))] {
+            let params = SolverParams { block_mass, ..scene.solver.clone() };
+            let mut solver = Solver::new(&model, params).expect("time step");
+            let mut state = State::new(&model);
+            // Start from a loaded, moving state rather than rest.
+            for _ in 0..100 {
+                solver.step(&model, &mut state).expect("stable");
+            }
+            group.bench_function(BenchmarkId::new(name, format!("hex_{n_hex}")), |b| {
+                b.iter(|| solver.step(&model, &mut state).expect("stable"))
+            });
+        }
     }
     group.finish();
 }
@@ -73,17 +79,20 @@ fn relax(c: &mut Criterion) {
     assert_eq!(scene.solver.tolerance, 1e-5, "the slope scene relaxes to 1e-5");
     let model = build(&scene);
     let n = model.elements.len();
-    let mut steps = 0;
-    group.bench_function(BenchmarkId::new("dr_to_1e-5", format!("hex_{n}")), |b| {
-        b.iter(|| {
-            let mut solver = Solver::new(&model, scene.solver.clone()).expect("time step");
-            let mut state = State::new(&model);
-            let report = solver.relax(&model, &mut state, usize::MAX, 0, &mut |_, _| {}).expect("stable");
-            assert!(report.converged, "DR did not reach 1e-5 in {} steps", report.steps);
-            steps = report.steps;
-        })
-    });
-    eprintln!("dr_to_1e-5/hex_{n}: {steps} steps");
+    for (name, block_mass) in [("dr_to_1e-5", None), ("dr_to_1e-5_lumped", Some(false))] {
+        let params = SolverParams { block_mass, ..scene.solver.clone() };
+        let mut steps = 0;
+        group.bench_function(BenchmarkId::new(name, format!("hex_{n}")), |b| {
+            b.iter(|| {
+                let mut solver = Solver::new(&model, params.clone()).expect("time step");
+                let mut state = State::new(&model);
+                let report = solver.relax(&model, &mut state, usize::MAX, 0, &mut |_, _| {}).expect("stable");
+                assert!(report.converged, "DR did not reach 1e-5 in {} steps", report.steps);
+                steps = report.steps;
+            })
+        });
+        eprintln!("{name}/hex_{n}: {steps} steps");
+    }
     group.bench_function(BenchmarkId::new("build_model", format!("hex_{n}")), |b| b.iter(|| build(&scene)));
     group.finish();
 }
