@@ -15,3 +15,4 @@ pub mod damping;
 pub mod element;
 pub mod material;
 pub mod spring;
+pub mod tet_operator;
