@@ -28,7 +28,7 @@ pub enum Reject {
     BelowLowerBound,
     #[error("sliver: the sliding mass is thinner than the minimum depth or narrower than the minimum width")]
     Sliver,
-    #[error("the mass would slide toward the crest (driving moment <= 0)")]
+    #[error("the mass would slide toward the crest (driving moment <= 0, or within rounding of 0)")]
     WrongDirection,
     #[error("part of the sliding mass lies in no material")]
     NoMaterial,
@@ -46,6 +46,10 @@ impl Limits {
     pub const NONE: Limits = Limits { min_depth: 0.0, min_width: 0.0 };
 }
 
+/// `sum W sin(alpha)` at or below this fraction of `sum |W sin(alpha)|` is no
+/// net driving moment (`Reject::WrongDirection`).
+const DRIVE_ROUNDING: f64 = 1e-10;
+
 /// Slice data, struct-of-arrays, reused from circle to circle.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Slices {
@@ -57,6 +61,12 @@ pub(crate) struct Slices {
     pub tan_phi: Vec<f64>,
     /// Scratch: z of zone-edge crossings in one column.
     column: Vec<f64>,
+    /// Scratch, at the `n + 1` slice ends: x, `u = x - xc`,
+    /// `w = sqrt(r^2 - u^2)`, ground height.
+    xb: Vec<f64>,
+    ub: Vec<f64>,
+    wb: Vec<f64>,
+    zg: Vec<f64>,
     /// `sum W sin(alpha)` (N/m).
     pub drive: f64,
     pub x_exit: f64,
@@ -66,18 +76,13 @@ pub(crate) struct Slices {
 impl Slices {
     pub fn with_capacity(n: usize) -> Self {
         let v = || Vec::with_capacity(n);
-        Slices { w: v(), sin_a: v(), cos_a: v(), l: v(), c: v(), tan_phi: v(), column: Vec::with_capacity(16), ..Default::default() }
+        Slices { w: v(), sin_a: v(), cos_a: v(), l: v(), c: v(), tan_phi: v(), column: Vec::with_capacity(16), xb: v(), ub: v(), wb: v(), zg: v(), ..Default::default() }
     }
 
     pub fn len(&self) -> usize {
         self.w.len()
     }
 
-    fn clear(&mut self) {
-        for v in [&mut self.w, &mut self.sin_a, &mut self.cos_a, &mut self.l, &mut self.c, &mut self.tan_phi] {
-            v.clear();
-        }
-    }
 }
 
 #[inline]
@@ -170,7 +175,7 @@ fn above_lower_bound(f: &Frame, c: Circle, x0: f64, x1: f64) -> bool {
 }
 
 /// Integral of the ground over `[x0, x1]`; `k` is a segment hint that only moves right.
-fn ground_integral(g: &[[f64; 2]], x0: f64, x1: f64, k: &mut usize) -> f64 {
+pub(crate) fn ground_integral(g: &[[f64; 2]], x0: f64, x1: f64, k: &mut usize) -> f64 {
     while *k + 2 < g.len() && g[*k + 1][0] <= x0 {
         *k += 1;
     }
@@ -190,14 +195,33 @@ fn ground_integral(g: &[[f64; 2]], x0: f64, x1: f64, k: &mut usize) -> f64 {
     }
 }
 
-/// `S(u) = int sqrt(r^2 - u^2) du`.
+/// Where [`asin_series`] is used (else the library's `asin`).
+const ASIN_SERIES_MAX: f64 = 0.1;
+
+/// `asin(x)` for `0 <= x <= ASIN_SERIES_MAX`: its Maclaurin series through
+/// `x^15` (truncation below `1.2e-2 x^17`, relative `< 2e-18` there).
 #[inline]
-fn sector(u: f64, r: f64) -> f64 {
-    let s = (u / r).clamp(-1.0, 1.0);
-    0.5 * (u * (r * r - u * u).max(0.0).sqrt() + r * r * s.asin())
+fn asin_series(x: f64) -> f64 {
+    // (2k)! / (4^k (k!)^2 (2k + 1)), k = 0..7.
+    const A: [f64; 8] = [1.0, 1.0 / 6.0, 3.0 / 40.0, 5.0 / 112.0, 35.0 / 1152.0, 63.0 / 2816.0, 231.0 / 13312.0, 143.0 / 10240.0];
+    let y = x * x;
+    // Horner; plain multiply-add (`mul_add` is a library call without `target-cpu`).
+    let mut p = A[7];
+    for a in A[..7].iter().rev() {
+        p = p * y + a;
+    }
+    x * p
 }
 
 /// Cuts the circle (internal frame) into `n` slices, filling `s`.
+///
+/// No trigonometry per slice: with `w = sqrt(r^2 - u^2)` at the slice ends
+/// (the arc is at `z = zc - w`), the base chord `(dx, dz) = (x1 - x0, w0 - w1)`
+/// of length `d` is perpendicular to the radius at `alpha = (beta0 + beta1)/2`,
+/// so `cos(alpha) = dx / d` and `sin(alpha) = dz / d` exactly; the angle the
+/// slice subtends is `beta1 - beta0 = 2 asin(d / 2r)` (a short series, slices
+/// being thin), which gives the arc length `l = r (beta1 - beta0)` and
+/// `S(u1) - S(u0) = (u1 w1 - u0 w0 + r^2 (beta1 - beta0)) / 2`.
 pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut Slices) -> Result<(), Reject> {
     let (xx, xe) = cut(f, c)?;
     if !above_lower_bound(f, c, xx, xe) {
@@ -206,45 +230,115 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
     if xe - xx < lim.min_width {
         return Err(Reject::Sliver);
     }
-    s.clear();
     s.x_exit = xx;
     s.x_entry = xe;
     let g = &f.ground;
-    let homogeneous = f.homogeneous();
     let b = (xe - xx) / n as f64;
-    let eps_z = 1e-9 * f.height();
-    let (mut k, mut max_h, mut drive) = (0usize, 0.0f64, 0.0);
-    let mut x0 = xx;
-    let (mut beta0, mut s0) = (((x0 - c.xc) / c.r).clamp(-1.0, 1.0).asin(), sector(x0 - c.xc, c.r));
+    let (r, r2) = (c.r, c.r * c.r);
+    let half_inv_r = 0.5 / r;
+    // Pass 1, slice ends: x, u = x - xc, w = sqrt(r^2 - u^2), ground height.
+    for v in [&mut s.xb, &mut s.ub, &mut s.wb, &mut s.zg] {
+        v.clear();
+    }
+    let mut k = 0usize;
+    for i in 0..=n {
+        let x = if i == 0 {
+            xx
+        } else if i == n {
+            xe
+        } else {
+            xx + i as f64 * b
+        };
+        let u = x - c.xc;
+        while k + 2 < g.len() && g[k + 1][0] <= x {
+            k += 1;
+        }
+        let (p, q) = (g[k], g[k + 1]);
+        s.xb.push(x);
+        s.ub.push(u);
+        s.wb.push((r2 - u * u).max(0.0).sqrt());
+        s.zg.push(p[1] + (q[1] - p[1]) * (x - p[0]) / (q[0] - p[0]));
+    }
+    // Pass 2, per slice and branch-free: base direction from the chord,
+    // subtended angle, area under the ground (trapezoid) less the arc's.
+    for v in [&mut s.w, &mut s.sin_a, &mut s.cos_a, &mut s.l] {
+        v.clear();
+        v.resize(n, 0.0);
+    }
+    let (xb, ub, wb, zg) = (&s.xb[..=n], &s.ub[..=n], &s.wb[..=n], &s.zg[..=n]);
+    let (area, sin_a, cos_a, l) = (&mut s.w[..n], &mut s.sin_a[..n], &mut s.cos_a[..n], &mut s.l[..n]);
+    let mut fix = false;
     for i in 0..n {
-        let x1 = if i + 1 == n { xe } else { xx + (i + 1) as f64 * b };
-        let u1 = x1 - c.xc;
-        let (beta1, s1) = ((u1 / c.r).clamp(-1.0, 1.0).asin(), sector(u1, c.r));
-        let alpha = 0.5 * (beta0 + beta1);
-        let (sin_a, cos_a) = alpha.sin_cos();
-        let area = (ground_integral(g, x0, x1, &mut k) - (c.zc * (x1 - x0) - (s1 - s0))).max(0.0);
-        let base = [c.xc + c.r * sin_a, c.zc - c.r * cos_a + eps_z];
+        let (dx, dz) = (xb[i + 1] - xb[i], wb[i] - wb[i + 1]);
+        let d = (dx * dx + dz * dz).sqrt();
+        let inv_d = 1.0 / d;
+        cos_a[i] = dx * inv_d;
+        sin_a[i] = dz * inv_d;
+        let h = d * half_inv_r;
+        fix |= h > ASIN_SERIES_MAX || !(d > 0.0);
+        let dbeta = 2.0 * asin_series(h);
+        l[i] = r * dbeta;
+        area[i] = 0.5 * (zg[i] + zg[i + 1]) * dx - (c.zc * dx - 0.5 * (ub[i + 1] * wb[i + 1] - ub[i] * wb[i] + r2 * dbeta));
+    }
+    // Fix-ups, rare: long chords (asin), zero-width slices (the arc's tangent),
+    // slices with a ground vertex inside (exact ground integral).
+    for i in (0..n).filter(|_| fix) {
+        let (dx, dz) = (xb[i + 1] - xb[i], wb[i] - wb[i + 1]);
+        let d = (dx * dx + dz * dz).sqrt();
+        let h = d * half_inv_r;
+        if h > ASIN_SERIES_MAX || !(d > 0.0) {
+            let dbeta = 2.0 * h.min(1.0).asin();
+            l[i] = r * dbeta;
+            area[i] = 0.5 * (zg[i] + zg[i + 1]) * dx - (c.zc * dx - 0.5 * (ub[i + 1] * wb[i + 1] - ub[i] * wb[i] + r2 * dbeta));
+            if !(d > 0.0) {
+                (cos_a[i], sin_a[i]) = (wb[i] / r, ub[i] / r);
+            }
+        }
+    }
+    for v in &g[1..g.len() - 1] {
+        if !(v[0] > xx && v[0] < xe) {
+            continue;
+        }
+        let j = (((v[0] - xx) / b) as usize).min(n - 1);
+        for i in j.saturating_sub(1)..(j + 2).min(n) {
+            let (x0, x1) = (xb[i], xb[i + 1]);
+            if v[0] > x0 && v[0] < x1 {
+                let mut kk = 0;
+                let trapezoid = 0.5 * (zg[i] + zg[i + 1]) * (x1 - x0);
+                area[i] += ground_integral(g, x0, x1, &mut kk) - trapezoid;
+            }
+        }
+    }
+    // Pass 3: weights and strengths.
+    let homogeneous = f.homogeneous();
+    let eps_z = 1e-9 * f.height();
+    s.c.clear();
+    s.tan_phi.clear();
+    let (mut max_h, mut drive, mut gross) = (0.0f64, 0.0, 0.0f64);
+    for i in 0..n {
+        let (x0, x1) = (s.xb[i], s.xb[i + 1]);
+        let a = s.w[i].max(0.0);
         let (w, strength) = match homogeneous {
-            Some(m) => (m.gamma * area, m),
+            Some(m) => (m.gamma * a, m),
             None => {
+                let base = [c.xc + r * s.sin_a[i], c.zc - r * s.cos_a[i] + eps_z];
                 let w = column_weight(f, c, 0.5 * (x0 + x1), &mut s.column).ok_or(Reject::NoMaterial)? * (x1 - x0);
                 (w, f.strength_at(base).ok_or(Reject::NoMaterial)?)
             }
         };
-        max_h = max_h.max(area / (x1 - x0));
-        drive += w * sin_a;
-        s.w.push(w);
-        s.sin_a.push(sin_a);
-        s.cos_a.push(cos_a);
-        s.l.push(c.r * (beta1 - beta0));
+        max_h = max_h.max(a / (x1 - x0));
+        drive += w * s.sin_a[i];
+        gross += (w * s.sin_a[i]).abs();
+        s.w[i] = w;
         s.c.push(strength.c);
         s.tan_phi.push(strength.tan_phi);
-        (x0, beta0, s0) = (x1, beta1, s1);
     }
     if max_h < lim.min_depth {
         return Err(Reject::Sliver);
     }
-    if drive <= 0.0 {
+    // A net driving moment within rounding of zero (a circle symmetric under
+    // level ground, F ~ 1e16) is no direction: its sign is noise.
+    if drive <= DRIVE_ROUNDING * gross {
         return Err(Reject::WrongDirection);
     }
     s.drive = drive;

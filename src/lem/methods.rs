@@ -7,7 +7,7 @@ use serde::Serialize;
 use super::geometry::{fill_slices, Limits, Reject, Slices};
 use super::{Circle, LemSection, Method};
 
-/// Bishop: stop when `|dF| <= BISHOP_TOL F`.
+/// Bishop: stop when the update `|dF| <= BISHOP_TOL F` (Newton, see [`bishop`]).
 const BISHOP_TOL: f64 = 1e-10;
 const MAX_ITER: usize = 200;
 /// Spencer: Newton stops when both updates are below this (F relative, theta rad).
@@ -23,25 +23,45 @@ pub(crate) fn ordinary(s: &Slices) -> Option<f64> {
     (f.is_finite() && f > 0.0).then_some(f)
 }
 
-/// Bishop simplified, by fixed-point iteration from `f0`:
-/// `F = sum[(c l cos(alpha) + W tan_phi) / m_alpha] / sum(W sin(alpha))`.
+/// Bishop simplified: the root of
+/// `g(F) = F sum(W sin(alpha)) - sum[(c l cos(alpha) + W tan_phi) / m_alpha(F)]`,
+/// `m_alpha = cos(alpha) + sin(alpha) tan_phi / F`, by Newton's method from
+/// `f0` (the ordinary F), stopping when `|dF| <= BISHOP_TOL F`. Where the
+/// Newton step is unusable (`g' <= 0`, or a step to `F <= 0`) the step is the
+/// classical fixed-point one, `F <- sum[...] / sum(W sin(alpha))`. `None` if
+/// `m_alpha <= 0` for some slice at some iterate, or no convergence in
+/// `MAX_ITER` steps.
 pub(crate) fn bishop(s: &Slices, f0: f64) -> Option<f64> {
+    bishop_counted(s, f0).map(|(f, _)| f)
+}
+
+/// [`bishop`] and the number of passes over the slices it took.
+pub(crate) fn bishop_counted(s: &Slices, f0: f64) -> Option<(f64, usize)> {
     let mut f = f0;
-    for _ in 0..MAX_ITER {
-        let mut resist = 0.0;
+    let drive = s.drive;
+    for pass in 1..=MAX_ITER {
+        let inv_f = 1.0 / f;
+        // resist = sum a / m, slope = sum a b / m^2 = F^2 d(resist)/dF.
+        let (mut resist, mut slope) = (0.0, 0.0);
         for i in 0..s.len() {
-            let m_alpha = s.cos_a[i] + s.sin_a[i] * s.tan_phi[i] / f;
+            let b = s.sin_a[i] * s.tan_phi[i];
+            let m_alpha = s.cos_a[i] + b * inv_f;
             if m_alpha <= 0.0 {
                 return None;
             }
-            resist += (s.c[i] * s.l[i] * s.cos_a[i] + s.w[i] * s.tan_phi[i]) / m_alpha;
+            let q = (s.c[i] * s.l[i] * s.cos_a[i] + s.w[i] * s.tan_phi[i]) / m_alpha;
+            resist += q;
+            slope += q * b / m_alpha;
         }
-        let f_new = resist / s.drive;
-        if !(f_new.is_finite() && f_new > 0.0) {
+        let fixed_point = resist / drive;
+        if !(fixed_point.is_finite() && fixed_point > 0.0) {
             return None;
         }
+        let dg = drive - slope * inv_f * inv_f;
+        let newton = f - (f * drive - resist) / dg;
+        let f_new = if dg > 0.0 && newton > 0.0 && newton.is_finite() { newton } else { fixed_point };
         if (f_new - f).abs() <= BISHOP_TOL * f_new {
-            return Some(f_new);
+            return Some((f_new, pass));
         }
         f = f_new;
     }

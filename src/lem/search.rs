@@ -405,3 +405,126 @@ pub(crate) fn run(input: &LemInput, spec: &SearchSpec) -> Result<LemResult, crat
     }
     Ok(result)
 }
+
+#[cfg(test)]
+mod tests {
+    //! The trig-free slices and Newton's Bishop against the formulation they
+    //! replaced (`asin` at each slice end, `sin_cos` of the mid angle, and
+    //! fixed-point iteration), on every circle of the default grid.
+    use super::*;
+    use crate::lem::geometry::{cut, ground_integral};
+    use crate::lem::methods::bishop_counted;
+    use std::path::Path;
+
+    /// Slices as before: `beta = asin(u / r)` at the ends, `alpha` their mean.
+    fn reference_slices(f: &Frame, c: Circle, n: usize) -> (Vec<[f64; 4]>, f64) {
+        let (xx, xe) = cut(f, c).unwrap();
+        let sector = |u: f64| 0.5 * (u * (c.r * c.r - u * u).max(0.0).sqrt() + c.r * c.r * (u / c.r).clamp(-1.0, 1.0).asin());
+        let gamma = f.homogeneous().unwrap().gamma;
+        let b = (xe - xx) / n as f64;
+        let (mut out, mut drive) = (Vec::new(), 0.0);
+        for i in 0..n {
+            let (x0, x1) = (xx + i as f64 * b, if i + 1 == n { xe } else { xx + (i + 1) as f64 * b });
+            let (b0, b1) = (((x0 - c.xc) / c.r).clamp(-1.0, 1.0).asin(), ((x1 - c.xc) / c.r).clamp(-1.0, 1.0).asin());
+            let (sa, ca) = (0.5 * (b0 + b1)).sin_cos();
+            let mut k = 0;
+            let area = (ground_integral(&f.ground, x0, x1, &mut k) - (c.zc * (x1 - x0) - (sector(x1 - c.xc) - sector(x0 - c.xc)))).max(0.0);
+            drive += gamma * area * sa;
+            out.push([gamma * area, sa, ca, c.r * (b1 - b0)]);
+        }
+        (out, drive)
+    }
+
+    /// Bishop as before: fixed-point iteration, `|dF| <= 1e-10 F`.
+    fn reference_bishop(s: &[[f64; 4]], drive: f64, c: f64, t: f64, f0: f64) -> Option<(f64, usize)> {
+        let mut f = f0;
+        for it in 1..=200 {
+            let mut resist = 0.0;
+            for &[w, sa, ca, l] in s {
+                let m = ca + sa * t / f;
+                if m <= 0.0 {
+                    return None;
+                }
+                resist += (c * l * ca + w * t) / m;
+            }
+            let f_new = resist / drive;
+            if !(f_new.is_finite() && f_new > 0.0) {
+                return None;
+            }
+            if (f_new - f).abs() <= 1e-10 * f_new {
+                return Some((f_new, it));
+            }
+            f = f_new;
+        }
+        None
+    }
+
+    #[test]
+    fn trig_free_slices_and_newton_bishop_match_the_old_formulation_on_the_grid() {
+        for path in ["verification/lem/acads-1a.toml", "verification/lem/paper-slope-explicit.toml"] {
+            let input = LemInput::load(Path::new(path)).unwrap();
+            let f = &input.section.frame;
+            let h = f.height();
+            let n = input.slices;
+            let ev = Evaluator { f, n, lim: Limits { min_depth: 0.02 * h, min_width: 0.1 * h } };
+            let spec = SearchSpec { entry_exit: None, refine: false, parallel: false, ..SearchSpec::default() };
+            let plan = Plan::new(f, &spec);
+            let (g, xr, zr) = plan.grid.unwrap();
+            let strength = f.homogeneous().unwrap();
+            let mut s = Slices::with_capacity(n);
+            let (mut accepted, mut with_fs, mut passes_new, mut passes_old) = (0usize, 0usize, 0usize, 0usize);
+            let (mut geo_err, mut fs_err, mut noise_accepted) = ([0.0f64; 4], 0.0f64, 0usize);
+            for job in 0..plan.n_grid_jobs() {
+                let (i, j) = (job / g.nz, job % g.nz);
+                let centre = [lin(xr, i, g.nx), lin(zr, j, g.nz)];
+                let r_lo = dist_to_polyline(&f.ground, centre);
+                let LowerBound::Level(z) = f.lower else { panic!("level lower bound") };
+                let r_hi = centre[1] - z;
+                for q in 0..g.radii {
+                    let c = Circle { xc: centre[0], zc: centre[1], r: r_lo + (r_hi - r_lo) * (q + 1) as f64 / g.radii as f64 };
+                    if r_hi <= r_lo {
+                        continue;
+                    }
+                    match fill_slices(f, c, n, ev.lim, &mut s) {
+                        Ok(()) => {}
+                        Err(Reject::WrongDirection) => {
+                            // Net drive within rounding of 0: the old test `drive <= 0` took its sign.
+                            if reference_slices(f, c, n).1 > 0.0 {
+                                noise_accepted += 1;
+                            }
+                            continue;
+                        }
+                        Err(_) => continue,
+                    }
+                    accepted += 1;
+                    let (old, drive) = reference_slices(f, c, n);
+                    let scale = old.iter().map(|v| v[0]).fold(0.0, f64::max);
+                    for (i, v) in old.iter().enumerate() {
+                        let d = [(s.w[i] - v[0]).abs() / scale, (s.sin_a[i] - v[1]).abs(), (s.cos_a[i] - v[2]).abs(), (s.l[i] - v[3]).abs() / v[3]];
+                        for k in 0..4 {
+                            geo_err[k] = geo_err[k].max(d[k]);
+                        }
+                    }
+                    let o = ordinary(&s).unwrap();
+                    let new = bishop_counted(&s, o);
+                    let old = reference_bishop(&old, drive, strength.c, strength.tan_phi, o);
+                    if new.is_some() != old.is_some() { println!("DISAGREE {path} {c:?} o={o} new={new:?} old={old:?} ref_from_new={:?}", new.and_then(|(a,_)| reference_bishop(&reference_slices(f, c, n).0, drive, strength.c, strength.tan_phi, a))); continue; }
+                    if let (Some((a, na)), Some((b, nb))) = (new, old) {
+                        with_fs += 1;
+                        passes_new += na;
+                        passes_old += nb;
+                        fs_err = fs_err.max((a - b).abs() / b);
+                    }
+                }
+            }
+            println!(
+                "{path}: {accepted} admissible of {} circles ({noise_accepted} more with the old `drive > 0`), {with_fs} with a Bishop F; passes per circle Newton {:.2}, fixed point {:.2}; max slice differences (W / max W, sin, cos, l relative) {geo_err:?}, max relative F difference {fs_err:.1e}",
+                plan.n_grid_jobs() * g.radii,
+                passes_new as f64 / with_fs as f64,
+                passes_old as f64 / with_fs as f64
+            );
+            assert!(geo_err.iter().all(|&e| e < 1e-10), "{path}: slices differ by {geo_err:?}");
+            assert!(fs_err < 1e-9, "{path}: Bishop F differs by {fs_err:e}");
+        }
+    }
+}
