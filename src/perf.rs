@@ -309,8 +309,8 @@ pub fn slope_mesh(slope_geo: &Path, refine: u32, dir: &Path) -> Result<PathBuf, 
     Ok(msh)
 }
 
-/// Markdown tables of the damping rows and the scaling rows.
-pub fn markdown(damping: &[DampingRow], scaling: &[ScalingRow]) -> String {
+/// The damping rows as a Markdown table.
+pub fn damping_markdown(damping: &[DampingRow]) -> String {
     let mut md = String::new();
     if !damping.is_empty() {
         md.push_str("| damping | mass scaling | block masses | outcome | steps | wall (s) | max abs u_z (m) |\n|---|---|---|---|---|---|---|\n");
@@ -318,6 +318,12 @@ pub fn markdown(damping: &[DampingRow], scaling: &[ScalingRow]) -> String {
             let _ = writeln!(md, "| {} | {} | {} | {} | {} | {:.2} | {:.4e} |", r.damping, r.mass_scaling, r.block_mass, r.outcome, r.steps, r.seconds, r.max_abs_uz);
         }
     }
+    md
+}
+
+/// The scaling rows as a Markdown table, with the fitted exponents.
+pub fn scaling_markdown(scaling: &[ScalingRow]) -> String {
+    let mut md = String::new();
     if !scaling.is_empty() {
         md.push_str("\n| refine | elements | node copies | springs | build (s) | step (ms) | M element-steps/s | step GB/s | DR steps | DR steps, lumped | DR (s) | FEM dofs | FEM (s) | DR / FEM |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         for r in scaling {
@@ -395,20 +401,25 @@ pub fn pyslope_seconds(json: &Path, case: &str) -> Result<f64, Error> {
         .ok_or_else(|| Error::io(json, std::io::Error::other(format!("no cases.{case}.timing_our_grid.total_s"))))
 }
 
-/// Measures the headline figures with the repository's committed inputs
-/// (paths relative to the repository root).
-pub fn headline(root: &Path, progress: &mut dyn FnMut(&str)) -> Result<Headline, Error> {
-    progress("stream triad");
-    let stream_gbs = stream_triad(8 << 20, 10);
+/// The paper slope's scene and model (paths relative to the repository root).
+pub fn paper_slope(root: &Path) -> Result<(Scene, Model), Error> {
     let scene = Scene::load(&root.join("verification/cases/slope/slope.toml"))?;
     let model = crate::run::build_model(&scene)?;
+    Ok((scene, model))
+}
+
+/// Measures the headline figures on the paper slope's `scene` and `model`
+/// ([`paper_slope`]) and the repository's LEM inputs under `root`.
+pub fn headline(root: &Path, scene: &Scene, model: &Model, progress: &mut dyn FnMut(&str)) -> Result<Headline, Error> {
+    progress("stream triad");
+    let stream_gbs = stream_triad(8 << 20, 10);
     progress("paper slope: step");
-    let step_block = time_steps(&model, &scene.solver, 500)?;
-    let step_lumped = time_steps(&model, &SolverParams { block_mass: Some(false), ..scene.solver.clone() }, 500)?;
+    let step_block = time_steps(model, &scene.solver, 500)?;
+    let step_lumped = time_steps(model, &SolverParams { block_mass: Some(false), ..scene.solver.clone() }, 500)?;
     progress("paper slope: dynamic relaxation");
-    let dr_block = time_dr(&model, &scene.solver)?;
+    let dr_block = time_dr(model, &scene.solver)?;
     progress("paper slope: FEM");
-    let (fem_s, fem_dofs) = time_fem(&scene, 5)?;
+    let (fem_s, fem_dofs) = time_fem(scene, 5)?;
     let mut lem = Vec::new();
     for (case, input) in LEM_CASES {
         progress(&format!("LEM grid: {case}"));
@@ -473,10 +484,9 @@ const COMMITTED: [(f64, &str); 4] =
 /// `perf.md`, `damping.csv`, `scaling.csv` and `scaling.png` to `out`.
 pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn FnMut(&str)) -> Result<String, Error> {
     std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
-    let head = headline(root, progress)?;
-    let scene = Scene::load(&root.join("verification/cases/slope/slope.toml"))?;
+    let (scene, model) = paper_slope(root)?;
+    let head = headline(root, &scene, &model, progress)?;
     let damping = if opts.damping {
-        let model = crate::run::build_model(&scene)?;
         damping_table(&model, &scene.solver, 400_000, progress)
     } else {
         Vec::new()
@@ -509,8 +519,8 @@ pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn 
         "# Performance (cdem perf)\n\n## Headline (paper slope, {} threads)\n\n{}\n## Damping (paper slope, to 1e-5)\n\n{}\n## Growth with size\n\n{}",
         rayon::current_num_threads(),
         head.markdown(),
-        markdown(&damping, &[]),
-        markdown(&[], &scaling)
+        damping_markdown(&damping),
+        scaling_markdown(&scaling)
     );
     crate::output::write_atomic(&out.join("perf.md"), md.as_bytes())?;
     Ok(md)

@@ -6,8 +6,7 @@
 
 use std::path::Path;
 
-use cdem::perf::{fit_power, headline, step_bytes};
-use cdem::scene::Scene;
+use cdem::perf::{fit_power, headline, paper_slope, step_bytes};
 use cdem::validation::{record, Check};
 
 /// The fit recovers an exact power law.
@@ -24,8 +23,7 @@ fn power_fit_recovers_an_exact_power_law() {
 /// 8280-8380 B per hexahedron with 7.4-7.9 springs per hexahedron).
 #[test]
 fn step_bytes_match_the_hand_count() {
-    let scene = Scene::load(Path::new("verification/cases/slope/slope.toml")).unwrap();
-    let model = cdem::run::build_model(&scene).unwrap();
+    let (_, model) = paper_slope(Path::new(".")).unwrap();
     let per_element = step_bytes(&model, false) / model.elements.len() as f64;
     assert!((8280.0..=8380.0).contains(&per_element), "{per_element} B per element");
     // Block masses add 72 n_c^2 B per mesh node of n_c copies and 151 B per copy: more than
@@ -37,7 +35,8 @@ fn step_bytes_match_the_hand_count() {
 /// The four figures, side by side in one run, as reported rows.
 #[test]
 fn headline_figures_for_the_report() {
-    let h = headline(Path::new("."), &mut |_| {}).unwrap();
+    let (scene, model) = paper_slope(Path::new(".")).unwrap();
+    let h = headline(Path::new("."), &scene, &model, &mut |_| {}).unwrap();
     assert!(h.dr_block.converged, "DR of the paper slope converges");
     println!("{}", h.markdown());
     let src = "references/performance.md";

@@ -162,12 +162,12 @@ impl BlockMass {
         &self.nodes[self.ptr[c] as usize..self.ptr[c + 1] as usize]
     }
 
-    /// `(B x)_i` for node `i`, with `B` the mass or its inverse.
+    /// `(M x)_i` for node `i`.
     #[inline]
-    fn apply(&self, blocks: &[f64], i: usize, x: impl Fn(usize) -> f64) -> [f64; 3] {
+    fn mass_times(&self, i: usize, x: impl Fn(usize) -> f64) -> [f64; 3] {
         let nodes = self.cluster_nodes(i);
         let w = 3 * nodes.len();
-        let rows = &blocks[self.row[i]..self.row[i] + 3 * w];
+        let rows = &self.mass[self.row[i]..self.row[i] + 3 * w];
         let mut y = [0.0; 3];
         for (j, &node) in nodes.iter().enumerate() {
             for d in 0..3 {
@@ -178,12 +178,6 @@ impl BlockMass {
             }
         }
         y
-    }
-
-    /// Acceleration of node `i`, `(M^-1 f)_i`, for the force `f(k)`.
-    #[inline]
-    pub fn accelerate(&self, i: usize, f: impl Fn(usize) -> f64) -> [f64; 3] {
-        self.apply(&self.inverse, i, f)
     }
 
     /// All accelerations `M^-1 f` in two parallel passes, for the update:
@@ -223,7 +217,7 @@ impl BlockMass {
     /// and summed in node order, so the result is thread-count independent.
     pub fn quadratic(&self, x: &[f64], per_node: &mut [f64]) -> f64 {
         per_node.par_iter_mut().with_min_len(1024).enumerate().for_each(|(i, q)| {
-            let y = self.apply(&self.mass, i, |k| x[k]);
+            let y = self.mass_times(i, |k| x[k]);
             *q = (0..3).map(|a| x[3 * i + a] * y[a]).sum::<f64>();
         });
         per_node.iter().sum()
