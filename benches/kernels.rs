@@ -20,32 +20,13 @@
 //! `verification/study/slope-h1.msh` (4000), `slope-h05.msh` (16000), built
 //! from `verification/cases/slope/slope.toml` with its mesh file replaced.
 
-use std::path::{Path, PathBuf};
+mod common;
 
 use cdem::model::{Model, ELEMENT_SLOT};
 use cdem::physics::spring::SpringState;
-use cdem::scene::Scene;
 use cdem::solver::forces;
+use common::{slope_model, MESHES};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-
-/// Mesh files relative to the slope scene's directory, with their hex counts.
-const MESHES: [(&str, usize); 4] = [
-    ("../../study/slope-h4.msh", 250),
-    ("slope.msh", 1000),
-    ("../../study/slope-h1.msh", 4000),
-    ("../../study/slope-h05.msh", 16000),
-];
-
-fn scene_path() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("verification/cases/slope/slope.toml")
-}
-
-/// The paper slope's scene with another mesh, and its model.
-fn slope_model(mesh: &str) -> Model {
-    let mut scene = Scene::load(&scene_path()).expect("slope scene loads");
-    scene.mesh.file = mesh.into();
-    cdem::run::build_model(&scene).expect("slope model builds")
-}
 
 /// A smooth, deterministic displacement field (m); the kernels have no
 /// data-dependent branches in the elastic phase, so any finite field times

@@ -19,31 +19,13 @@
 //! DR against FEM on the same mesh: `dr_to_1e-5 / fem_solve_scene`
 //! (or `(build_model + dr_to_1e-5) / fem_solve_scene` end to end).
 
-use std::path::{Path, PathBuf};
+mod common;
 
 use cdem::model::Model;
 use cdem::scene::Scene;
 use cdem::solver::{Solver, SolverParams, State};
+use common::{slope_scene, MESHES};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-
-/// Mesh files relative to the slope scene's directory, with their hex counts.
-const MESHES: [(&str, usize); 4] = [
-    ("../../study/slope-h4.msh", 250),
-    ("slope.msh", 1000),
-    ("../../study/slope-h1.msh", 4000),
-    ("../../study/slope-h05.msh", 16000),
-];
-
-fn scene_path() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("verification/cases/slope/slope.toml")
-}
-
-/// The paper slope's scene with another mesh.
-fn slope_scene(mesh: &str) -> Scene {
-    let mut scene = Scene::load(&scene_path()).expect("slope scene loads");
-    scene.mesh.file = mesh.into();
-    scene
-}
 
 fn build(scene: &Scene) -> Model {
     cdem::run::build_model(scene).expect("slope model builds")

@@ -2,32 +2,11 @@
 //! the patch test (uniform strain reproduced exactly by one perturbed element).
 //! References: references/kernels.md.
 
-use cdem::mesh::perturb::SplitMix64;
+mod common;
+
 use cdem::mesh::shape::{check_cell, cross, dot, CellKind, Decomposition};
 use cdem::physics::element::{element_force, element_operators, element_stress};
-use cdem::physics::material::{Material, YoungPoisson};
-
-const UNIT_HEX: [[f64; 3]; 8] = [
-    [0., 0., 0.],
-    [1., 0., 0.],
-    [1., 1., 0.],
-    [0., 1., 0.],
-    [0., 0., 1.],
-    [1., 0., 1.],
-    [1., 1., 1.],
-    [0., 1., 1.],
-];
-const UNIT_PRISM: [[f64; 3]; 6] = [[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.], [1., 0., 1.], [0., 1., 1.]];
-
-fn rock() -> Material {
-    Material { lame: YoungPoisson { young: 3.0e8, poisson: 0.3 }.into(), density: 2100.0 }
-}
-
-/// Corners of `base` moved by up to `r` per axis (seeded).
-fn perturbed(base: &[[f64; 3]], r: f64, seed: u64) -> Vec<[f64; 3]> {
-    let mut rng = SplitMix64::new(seed);
-    base.iter().map(|x| x.map(|v| v + r * (2.0 * rng.next_f64() - 1.0))).collect()
-}
+use common::{perturbed, rock, UNIT_HEX, UNIT_PRISM};
 
 /// Polyhedron volume by the divergence theorem over the face fans (a, b, F):
 /// an independent path from the tetrahedra.
@@ -72,7 +51,7 @@ fn tetrahedra_volume_equals_right_prism_volume() {
 fn tetrahedra_volume_equals_perturbed_polyhedron_volume() {
     for seed in 0..20 {
         for (kind, base) in [(CellKind::Hex8, &UNIT_HEX[..]), (CellKind::Prism6, &UNIT_PRISM[..])] {
-            let x = perturbed(base, 0.15, seed);
+            let x = perturbed(base, 1.0, 0.15, seed);
             let v = check_cell(kind, &x).unwrap();
             let reference = divergence_volume(kind, &x);
             assert!((v - reference).abs() < 1e-12 * reference, "{kind:?} seed {seed}: {v} vs {reference}");
@@ -83,7 +62,7 @@ fn tetrahedra_volume_equals_perturbed_polyhedron_volume() {
 #[test]
 fn lumped_mass_is_positive_and_sums_to_rho_v() {
     for (kind, base) in [(CellKind::Hex8, &UNIT_HEX[..]), (CellKind::Prism6, &UNIT_PRISM[..])] {
-        let x = perturbed(base, 0.15, 7);
+        let x = perturbed(base, 1.0, 0.15, 7);
         let op = element_operators(kind, &x, &rock()).unwrap();
         assert!(op.mass.iter().all(|&m| m > 0.0));
         let total: f64 = op.mass.iter().sum();
@@ -105,7 +84,7 @@ fn patch_test_uniform_strain_is_exact_in_one_perturbed_element() {
     let smax = expected.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     for (kind, base) in [(CellKind::Hex8, &UNIT_HEX[..]), (CellKind::Prism6, &UNIT_PRISM[..]), (CellKind::Tet4, &UNIT_HEX[..4])] {
         let base: Vec<[f64; 3]> = if kind == CellKind::Tet4 { vec![[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.]] } else { base.to_vec() };
-        let x = perturbed(&base, 0.2, 11);
+        let x = perturbed(&base, 1.0, 0.2, 11);
         let op = element_operators(kind, &x, &mat).unwrap();
         let nodes: Vec<u32> = (0..x.len() as u32).collect();
         let u: Vec<f64> = x.iter().flat_map(|p| [0, 1, 2].map(|i| (0..3).map(|j| h[i][j] * p[j]).sum::<f64>())).collect();
@@ -134,7 +113,7 @@ fn patch_test_uniform_strain_is_exact_in_one_perturbed_element() {
 
 #[test]
 fn stiffness_is_symmetric() {
-    let x = perturbed(&UNIT_HEX, 0.2, 3);
+    let x = perturbed(&UNIT_HEX, 1.0, 0.2, 3);
     let op = element_operators(CellKind::Hex8, &x, &rock()).unwrap();
     let kmax = op.k.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     for i in 0..24 {

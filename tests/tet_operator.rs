@@ -3,42 +3,21 @@
 //! every supported cell kind, and zero force for rigid motions.
 //! References: references/layout.md.
 
+mod common;
+
 use std::path::Path;
 
 use cdem::mesh::perturb::SplitMix64;
 use cdem::mesh::shape::{cross, CellKind};
 use cdem::model::ELEMENT_SLOT;
 use cdem::physics::element::{element_force, element_operators};
-use cdem::physics::material::{Material, YoungPoisson};
 use cdem::physics::tet_operator::{tet_element_force, tet_operator, TetOperators, TetTopology};
 use cdem::scene::Scene;
 use cdem::solver::forces;
+use common::{perturbed, rock, UNIT_HEX, UNIT_PRISM, UNIT_TET};
 
 /// Relative tolerance of the per-tet force against the condensed one.
 const REL_TOL: f64 = 1e-12;
-
-const UNIT_HEX: [[f64; 3]; 8] = [
-    [0., 0., 0.],
-    [1., 0., 0.],
-    [1., 1., 0.],
-    [0., 1., 0.],
-    [0., 0., 1.],
-    [1., 0., 1.],
-    [1., 1., 1.],
-    [0., 1., 1.],
-];
-const UNIT_PRISM: [[f64; 3]; 6] = [[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.], [1., 0., 1.], [0., 1., 1.]];
-const UNIT_TET: [[f64; 3]; 4] = [[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.]];
-
-fn rock() -> Material {
-    Material { lame: YoungPoisson { young: 3.0e8, poisson: 0.3 }.into(), density: 2100.0 }
-}
-
-/// Corners of `base` scaled by 2 m and moved by up to `r` per axis (seeded).
-fn perturbed(base: &[[f64; 3]], r: f64, seed: u64) -> Vec<[f64; 3]> {
-    let mut rng = SplitMix64::new(seed);
-    base.iter().map(|x| x.map(|v| 2.0 * v + r * (2.0 * rng.next_f64() - 1.0))).collect()
-}
 
 fn max_abs(v: &[f64]) -> f64 {
     v.iter().fold(0.0f64, |m, x| m.max(x.abs()))
@@ -68,7 +47,7 @@ fn per_tet_force_equals_condensed_force_on_random_displacements() {
     let mut rng = SplitMix64::new(2024);
     for seed in 0..10 {
         for (kind, base) in cells() {
-            let x = perturbed(base, 0.3, seed);
+            let x = perturbed(base, 2.0, 0.3, seed);
             let u: Vec<f64> = (0..3 * x.len()).map(|_| 1e-3 * (2.0 * rng.next_f64() - 1.0)).collect();
             let (f_k, f_t, _) = both(kind, &x, &u);
             let fmax = max_abs(&f_k);
@@ -85,14 +64,14 @@ fn per_tet_tetrahedron_has_one_tet_and_hexahedron_24() {
     assert_eq!(TetTopology::of(CellKind::Hex8).tets.len(), 24);
     assert_eq!(TetTopology::of(CellKind::Prism6).tets.len(), 18);
     assert_eq!(TetTopology::of(CellKind::Tet4).tets.len(), 1);
-    assert_eq!(tet_operator(CellKind::Hex8, &perturbed(&UNIT_HEX, 0.3, 1)).unwrap().len(), 24);
+    assert_eq!(tet_operator(CellKind::Hex8, &perturbed(&UNIT_HEX, 2.0, 0.3, 1)).unwrap().len(), 24);
 }
 
 #[test]
 fn per_tet_rigid_motion_gives_zero_force() {
     for seed in 0..5 {
         for (kind, base) in cells() {
-            let x = perturbed(base, 0.3, seed);
+            let x = perturbed(base, 2.0, 0.3, seed);
             // Translation plus an infinitesimal rotation about an arbitrary point.
             let (a, w, o) = ([1e-3, -2e-3, 0.5e-3], [0.3e-3, -0.2e-3, 0.5e-3], [0.4, 1.1, -0.7]);
             let u: Vec<f64> = x.iter().flat_map(|p| {
