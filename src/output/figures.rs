@@ -167,7 +167,7 @@ pub fn section_contour(path: &Path, title: &str, label: &str, patches: &[Patch],
         .caption(label, ("sans-serif", 14))
         .build_cartesian_2d(0.0..1.0, v0..v1)
         .map_err(|e| plot_err(path, e))?;
-    cb.configure_mesh().disable_mesh().disable_x_axis().y_label_formatter(&|v| format!("{v:.3e}")).label_style(("sans-serif", 13)).draw().map_err(|e| plot_err(path, e))?;
+    cb.configure_mesh().disable_mesh().disable_x_axis().y_label_formatter(&|v| format!("{:.3e}", snap_zero(*v, v1 - v0))).label_style(("sans-serif", 13)).draw().map_err(|e| plot_err(path, e))?;
     let n = 100;
     cb.draw_series((0..n).map(|k| {
         let (a, b) = (v0 + (v1 - v0) * k as f64 / n as f64, v0 + (v1 - v0) * (k + 1) as f64 / n as f64);
@@ -175,4 +175,21 @@ pub fn section_contour(path: &Path, title: &str, label: &str, patches: &[Patch],
     }))
     .map_err(|e| plot_err(path, e))?;
     root.present().map_err(|e| plot_err(path, e))
+}
+
+/// A tick within rounding of zero (plotters steps ticks by repeated addition,
+/// so a zero crossing can land on 3e-18) is printed as 0.
+fn snap_zero(v: f64, span: f64) -> f64 {
+    if v.abs() <= 1e-9 * span.abs() { 0.0 } else { v }
+}
+
+#[cfg(test)]
+mod tick_tests {
+    use super::snap_zero;
+
+    #[test]
+    fn a_rounding_residue_tick_prints_as_zero() {
+        assert_eq!(format!("{:.3e}", snap_zero(3.469e-18, 2.0e-3)), "0.000e0");
+        assert_eq!(format!("{:.3e}", snap_zero(-1.0e-4, 2.0e-3)), "-1.000e-4");
+    }
 }
