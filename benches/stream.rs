@@ -2,7 +2,8 @@
 //! "fraction of stream" of the step kernels (references/performance.md).
 //!
 //! - `stream/triad_1thread/64MiB`: `a[i] = b[i] + s c[i]` over three arrays of
-//!   8 Mi f64 (64 MiB each, far larger than the caches), one thread;
+//!   8 Mi f64 (64 MiB each, far larger than the caches), one thread; the
+//!   loops are `cdem::perf::triad`/`triad_par`, the ones `cdem perf` times;
 //! - `stream/triad_2threads/64MiB`: the same split over a 2-thread rayon pool;
 //! - `stream/read_1thread/64MiB`, `read_2threads`: `sum b[i]` (reads only),
 //!   the fairer yardstick for a read-dominated kernel such as `K_e u_e`.
@@ -13,25 +14,13 @@
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use cdem::perf::{triad, triad_par};
 use rayon::prelude::*;
 
 /// Elements per array: 8 Mi f64 = 64 MiB.
 const N: usize = 8 << 20;
-/// Chunk per rayon task (1 Mi elements, 8 MiB).
+/// Chunk per rayon task for the read loop (1 Mi elements, 8 MiB).
 const CHUNK: usize = 1 << 20;
-
-fn triad(a: &mut [f64], b: &[f64], c: &[f64], s: f64) {
-    for ((a, b), c) in a.iter_mut().zip(b).zip(c) {
-        *a = b + s * c;
-    }
-}
-
-fn triad_par(a: &mut [f64], b: &[f64], c: &[f64], s: f64) {
-    a.par_chunks_mut(CHUNK)
-        .zip(b.par_chunks(CHUNK))
-        .zip(c.par_chunks(CHUNK))
-        .for_each(|((a, b), c)| triad(a, b, c, s));
-}
 
 fn sum(b: &[f64]) -> f64 {
     // Four accumulators so that the add latency does not bound the loop.
