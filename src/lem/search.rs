@@ -197,23 +197,28 @@ impl Plan {
         self.n_grid_jobs() + self.entry_exit.map_or(0, |(e, _, _)| e.n_exit * e.n_entry)
     }
 
+    /// Grid job `job`'s centre and radius range.
+    fn grid_circles(&self, f: &Frame, job: usize) -> GridCircles {
+        let (g, xr, zr) = self.grid.expect("grid job");
+        let (i, j) = (job / g.nz, job % g.nz);
+        let centre = [lin(xr, i, g.nx), lin(zr, j, g.nz)];
+        let r_hi = match &f.lower {
+            LowerBound::Level(z) => centre[1] - z,
+            LowerBound::Polyline(p) => dist_to_polyline(p, centre),
+        };
+        GridCircles { centre, r_lo: dist_to_polyline(&f.ground, centre), r_hi, radii: g.radii }
+    }
+
     /// Evaluates every circle of job `job` (a grid centre or an exit-entry pair).
     fn job(&self, ev: &Evaluator, want: Want, job: usize, s: &mut Slices) -> Acc {
         let mut acc = Acc::default();
         let f = ev.f;
         if job < self.n_grid_jobs() {
-            let (g, xr, zr) = self.grid.expect("grid job");
-            let (i, j) = (job / g.nz, job % g.nz);
-            let centre = [lin(xr, i, g.nx), lin(zr, j, g.nz)];
-            let r_lo = dist_to_polyline(&f.ground, centre);
-            let r_hi = match &f.lower {
-                LowerBound::Level(z) => centre[1] - z,
-                LowerBound::Polyline(p) => dist_to_polyline(p, centre),
-            };
+            let g = self.grid_circles(f, job);
             for q in 0..g.radii {
                 let key = (job * g.radii + q) as u64;
-                let c = Circle { xc: centre[0], zc: centre[1], r: r_lo + (r_hi - r_lo) * (q + 1) as f64 / g.radii as f64 };
-                let r = if r_hi > r_lo { ev.fs(c, want, s) } else { Err(Reject::Misses) };
+                let c = g.circle(q);
+                let r = if g.spans() { ev.fs(c, want, s) } else { Err(Reject::Misses) };
                 acc.record(0, key, c, r);
             }
         } else {
@@ -236,6 +241,28 @@ impl Plan {
             }
         }
         acc
+    }
+}
+
+/// The circles of one grid centre: `radii` radii spread over `(r_lo, r_hi]`,
+/// from the distance to the ground to the distance to the lower bound.
+struct GridCircles {
+    centre: [f64; 2],
+    r_lo: f64,
+    r_hi: f64,
+    radii: usize,
+}
+
+impl GridCircles {
+    /// False where the lower bound is nearer than the ground: no circle cuts
+    /// the slope above it.
+    fn spans(&self) -> bool {
+        self.r_hi > self.r_lo
+    }
+
+    /// The `q`-th circle, `q` in `0..radii`, smallest first.
+    fn circle(&self, q: usize) -> Circle {
+        Circle { xc: self.centre[0], zc: self.centre[1], r: self.r_lo + (self.r_hi - self.r_lo) * (q + 1) as f64 / self.radii as f64 }
     }
 }
 
@@ -469,22 +496,19 @@ mod tests {
             let ev = Evaluator { f, n, lim: Limits { min_depth: 0.02 * h, min_width: 0.1 * h } };
             let spec = SearchSpec { entry_exit: None, refine: false, parallel: false, ..SearchSpec::default() };
             let plan = Plan::new(f, &spec);
-            let (g, xr, zr) = plan.grid.unwrap();
             let strength = f.homogeneous().unwrap();
             let mut s = Slices::with_capacity(n);
             let (mut accepted, mut with_fs, mut passes_new, mut passes_old) = (0usize, 0usize, 0usize, 0usize);
             let (mut geo_err, mut fs_err, mut noise_accepted) = ([0.0f64; 4], 0.0f64, 0usize);
+            let mut circles = 0;
             for job in 0..plan.n_grid_jobs() {
-                let (i, j) = (job / g.nz, job % g.nz);
-                let centre = [lin(xr, i, g.nx), lin(zr, j, g.nz)];
-                let r_lo = dist_to_polyline(&f.ground, centre);
-                let LowerBound::Level(z) = f.lower else { panic!("level lower bound") };
-                let r_hi = centre[1] - z;
+                let g = plan.grid_circles(f, job);
+                circles += g.radii;
+                if !g.spans() {
+                    continue;
+                }
                 for q in 0..g.radii {
-                    let c = Circle { xc: centre[0], zc: centre[1], r: r_lo + (r_hi - r_lo) * (q + 1) as f64 / g.radii as f64 };
-                    if r_hi <= r_lo {
-                        continue;
-                    }
+                    let c = g.circle(q);
                     match fill_slices(f, c, n, ev.lim, &mut s) {
                         Ok(()) => {}
                         Err(Reject::WrongDirection) => {
@@ -508,7 +532,7 @@ mod tests {
                     let o = ordinary(&s).unwrap();
                     let new = bishop_counted(&s, o);
                     let old = reference_bishop(&old, drive, strength.c, strength.tan_phi, o);
-                    if new.is_some() != old.is_some() { println!("DISAGREE {path} {c:?} o={o} new={new:?} old={old:?} ref_from_new={:?}", new.and_then(|(a,_)| reference_bishop(&reference_slices(f, c, n).0, drive, strength.c, strength.tan_phi, a))); continue; }
+                    assert_eq!(new.is_some(), old.is_some(), "{path}: {c:?}: Bishop F {new:?} (Newton) but {old:?} (fixed point)");
                     if let (Some((a, na)), Some((b, nb))) = (new, old) {
                         with_fs += 1;
                         passes_new += na;
@@ -519,7 +543,7 @@ mod tests {
             }
             println!(
                 "{path}: {accepted} admissible of {} circles ({noise_accepted} more with the old `drive > 0`), {with_fs} with a Bishop F; passes per circle Newton {:.2}, fixed point {:.2}; max slice differences (W / max W, sin, cos, l relative) {geo_err:?}, max relative F difference {fs_err:.1e}",
-                plan.n_grid_jobs() * g.radii,
+                circles,
                 passes_new as f64 / with_fs as f64,
                 passes_old as f64 / with_fs as f64
             );
