@@ -378,6 +378,34 @@ impl Headline {
     pub fn dr_over_fem(&self) -> f64 {
         self.dr_block.seconds / self.fem_s
     }
+
+    /// The figures as a Markdown table, each with its goal.
+    pub fn markdown(&self) -> String {
+        let mut md = String::new();
+        let _ = writeln!(md, "| figure | measured | goal |\n|---|---|---|");
+        let _ = writeln!(md, "| stream triad (this pool) | {:.1} GB/s | - |", self.stream_gbs);
+        for (name, s) in [("block masses (default)", &self.step_block), ("lumped masses", &self.step_lumped)] {
+            let _ = writeln!(
+                md,
+                "| step, {name}, {} elements | {:.3} ms, {:.2} M element-steps/s, {:.0} B/element, {:.1} GB/s = {:.0} % of stream | >= 50 % |",
+                s.elements,
+                1e3 * s.step_s,
+                s.mega_element_steps_per_s,
+                s.bytes_per_step / s.elements as f64,
+                s.gbs,
+                100.0 * s.gbs / self.stream_gbs
+            );
+        }
+        let _ = writeln!(
+            md,
+            "| DR to 1e-5 / FEM solve (paper slope) | {:.3} s ({} steps) / {:.4} s ({} dofs) = {:.1}x | <= 3x |",
+            self.dr_block.seconds, self.dr_block.steps, self.fem_s, self.fem_dofs, self.dr_over_fem()
+        );
+        for (case, ours, py) in &self.lem {
+            let _ = writeln!(md, "| LEM Bishop grid 20x20x10, {case}: pySlope / ours | {py:.3} s / {:.2} ms = {:.0}x | >= 100x |", 1e3 * ours, py / ours);
+        }
+        md
+    }
 }
 
 /// LEM cases timed against pySlope: (name in references/pyslope.json, input).
@@ -435,35 +463,6 @@ pub fn headline(root: &Path, scene: &Scene, model: &Model, progress: &mut dyn Fn
         lem.push((case.to_string(), ours, pyslope_seconds(&root.join("references/pyslope.json"), case)?));
     }
     Ok(Headline { stream_gbs, step_block, step_lumped, dr_block, fem_s, fem_dofs, lem })
-}
-
-impl Headline {
-    pub fn markdown(&self) -> String {
-        let mut md = String::new();
-        let _ = writeln!(md, "| figure | measured | goal |\n|---|---|---|");
-        let _ = writeln!(md, "| stream triad (this pool) | {:.1} GB/s | - |", self.stream_gbs);
-        for (name, s) in [("block masses (default)", &self.step_block), ("lumped masses", &self.step_lumped)] {
-            let _ = writeln!(
-                md,
-                "| step, {name}, {} elements | {:.3} ms, {:.2} M element-steps/s, {:.0} B/element, {:.1} GB/s = {:.0} % of stream | >= 50 % |",
-                s.elements,
-                1e3 * s.step_s,
-                s.mega_element_steps_per_s,
-                s.bytes_per_step / s.elements as f64,
-                s.gbs,
-                100.0 * s.gbs / self.stream_gbs
-            );
-        }
-        let _ = writeln!(
-            md,
-            "| DR to 1e-5 / FEM solve (paper slope) | {:.3} s ({} steps) / {:.4} s ({} dofs) = {:.1}x | <= 3x |",
-            self.dr_block.seconds, self.dr_block.steps, self.fem_s, self.fem_dofs, self.dr_over_fem()
-        );
-        for (case, ours, py) in &self.lem {
-            let _ = writeln!(md, "| LEM Bishop grid 20x20x10, {case}: pySlope / ours | {py:.3} s / {:.2} ms = {:.0}x | >= 100x |", 1e3 * ours, py / ours);
-        }
-        md
-    }
 }
 
 /// What `cdem perf` runs.

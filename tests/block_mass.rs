@@ -5,7 +5,6 @@
 use std::path::Path;
 
 use cdem::analysis::compare::relative_l2_between_copies;
-
 use cdem::model::Model;
 use cdem::run::{build_model, run_scene};
 use cdem::scene::Scene;

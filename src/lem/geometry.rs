@@ -82,7 +82,6 @@ impl Slices {
     pub fn len(&self) -> usize {
         self.w.len()
     }
-
 }
 
 #[inline]
@@ -267,31 +266,35 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
     }
     let (xb, ub, wb, zg) = (&s.xb[..=n], &s.ub[..=n], &s.wb[..=n], &s.zg[..=n]);
     let (area, sin_a, cos_a, l) = (&mut s.w[..n], &mut s.sin_a[..n], &mut s.cos_a[..n], &mut s.l[..n]);
-    let mut fix = false;
-    for i in 0..n {
+    // Slice i's chord `(dx, d)` and half chord over radius `h = sin(dbeta / 2)`.
+    let chord = |i: usize| {
         let (dx, dz) = (xb[i + 1] - xb[i], wb[i] - wb[i + 1]);
         let d = (dx * dx + dz * dz).sqrt();
+        (dx, dz, d, d * half_inv_r)
+    };
+    // Slice i's arc length and area (ground trapezoid less the arc's) for the angle `dbeta`.
+    let arc = |i: usize, dx: f64, dbeta: f64| {
+        (r * dbeta, 0.5 * (zg[i] + zg[i + 1]) * dx - (c.zc * dx - 0.5 * (ub[i + 1] * wb[i + 1] - ub[i] * wb[i] + r2 * dbeta)))
+    };
+    let mut fix = false;
+    for i in 0..n {
+        let (dx, dz, d, h) = chord(i);
         let inv_d = 1.0 / d;
         cos_a[i] = dx * inv_d;
         sin_a[i] = dz * inv_d;
-        let h = d * half_inv_r;
         fix |= h > ASIN_SERIES_MAX || !(d > 0.0);
-        let dbeta = 2.0 * asin_series(h);
-        l[i] = r * dbeta;
-        area[i] = 0.5 * (zg[i] + zg[i + 1]) * dx - (c.zc * dx - 0.5 * (ub[i + 1] * wb[i + 1] - ub[i] * wb[i] + r2 * dbeta));
+        (l[i], area[i]) = arc(i, dx, 2.0 * asin_series(h));
     }
     // Fix-ups, rare: long chords (asin), zero-width slices (the arc's tangent),
     // slices with a ground vertex inside (exact ground integral).
-    for i in (0..n).filter(|_| fix) {
-        let (dx, dz) = (xb[i + 1] - xb[i], wb[i] - wb[i + 1]);
-        let d = (dx * dx + dz * dz).sqrt();
-        let h = d * half_inv_r;
-        if h > ASIN_SERIES_MAX || !(d > 0.0) {
-            let dbeta = 2.0 * h.min(1.0).asin();
-            l[i] = r * dbeta;
-            area[i] = 0.5 * (zg[i] + zg[i + 1]) * dx - (c.zc * dx - 0.5 * (ub[i + 1] * wb[i + 1] - ub[i] * wb[i] + r2 * dbeta));
-            if !(d > 0.0) {
-                (cos_a[i], sin_a[i]) = (wb[i] / r, ub[i] / r);
+    if fix {
+        for i in 0..n {
+            let (dx, _, d, h) = chord(i);
+            if h > ASIN_SERIES_MAX || !(d > 0.0) {
+                (l[i], area[i]) = arc(i, dx, 2.0 * h.min(1.0).asin());
+                if !(d > 0.0) {
+                    (cos_a[i], sin_a[i]) = (wb[i] / r, ub[i] / r);
+                }
             }
         }
     }

@@ -42,6 +42,16 @@ pub struct UpdateInput<'a> {
     pub c: f64,
 }
 
+/// The unbalanced force `f_ext - f_int` on component `k`, 0 if it is fixed.
+#[inline]
+pub fn unbalanced(fixed: &[bool], f_ext: &[f64], f_int: &[f64], k: usize) -> f64 {
+    if fixed[k] {
+        0.0
+    } else {
+        f_ext[k] - f_int[k]
+    }
+}
+
 /// Components per parallel chunk of the update (a multiple of 3).
 pub const CHUNK: usize = 3 * 1024;
 
@@ -61,7 +71,7 @@ pub fn integrate(inp: &UpdateInput, u: &mut [f64], v: &mut [f64], partial: &mut 
 fn integrate_range(inp: &UpdateInput, first: usize, u: &mut [f64], v: &mut [f64]) -> UpdateReport {
     let mut rep = UpdateReport::default();
     let dt = inp.dt;
-    let unbalanced = |k: usize| if inp.fixed[k] { 0.0 } else { inp.f_ext[k] - inp.f_int[k] };
+    let unbalanced = |k: usize| unbalanced(inp.fixed, inp.f_ext, inp.f_int, k);
     for (j, (u, v)) in u.chunks_exact_mut(3).zip(v.chunks_exact_mut(3)).enumerate() {
         let i = first / 3 + j;
         // Per component: the mass and the velocity change `dt M^-1 f`.

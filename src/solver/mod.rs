@@ -165,7 +165,7 @@ impl Solver {
         self.update_damping(state);
         if let Some(b) = &self.block {
             let (fixed, f_ext, f_int) = (&model.fixed, &model.f_ext, &state.f_int);
-            b.accelerations(|k| if fixed[k] { 0.0 } else { f_ext[k] - f_int[k] }, &mut self.slot_force, &mut self.slot_acc);
+            b.accelerations(|k| integrate::unbalanced(fixed, f_ext, f_int, k), &mut self.slot_force, &mut self.slot_acc);
         }
         let inp = UpdateInput {
             mass: match &self.block {
