@@ -10,6 +10,7 @@
 use std::path::Path;
 
 use cdem::lem::{analyse, EntryExitSpec, GridSpec, LemInput, Method, Mode, SearchSpec};
+use cdem::perf::{pyslope_grid_search, LEM_CASES};
 use criterion::{criterion_group, criterion_main, Criterion};
 
 fn with_search(base: &LemInput, spec: SearchSpec, methods: &[Method]) -> LemInput {
@@ -19,7 +20,7 @@ fn with_search(base: &LemInput, spec: SearchSpec, methods: &[Method]) -> LemInpu
 fn bench(c: &mut Criterion) {
     let mut group = c.benchmark_group("lem_search");
     group.sample_size(10);
-    for (case, path) in [("acads_1a", "verification/lem/acads-1a.toml"), ("paper_slope", "verification/lem/paper-slope-explicit.toml")] {
+    for (case, path) in LEM_CASES {
         let base = LemInput::load(Path::new(path)).expect("committed case loads");
         for n in [10usize, 20, 40] {
             let spec = SearchSpec {
@@ -30,8 +31,7 @@ fn bench(c: &mut Criterion) {
             let input = with_search(&base, spec, &Method::ALL);
             group.bench_function(format!("{case}/full/grid_{n}x{n}x{}", n / 2), |b| b.iter(|| analyse(&input).expect("search succeeds")));
         }
-        let spec = SearchSpec { entry_exit: None, refine: false, parallel: false, ..SearchSpec::default() };
-        let input = with_search(&base, spec, &[Method::Bishop]);
+        let input = pyslope_grid_search(base);
         group.bench_function(format!("{case}/bishop_grid_only_1thread/grid_20x20x10"), |b| b.iter(|| analyse(&input).expect("search succeeds")));
     }
     group.finish();

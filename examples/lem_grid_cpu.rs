@@ -8,7 +8,8 @@
 
 use std::path::Path;
 
-use cdem::lem::{analyse, LemInput, Method, Mode, SearchSpec};
+use cdem::lem::{analyse, LemInput, Method};
+use cdem::perf::{pyslope_grid_search, LEM_CASES};
 
 const ROUNDS: usize = 15;
 const PER_ROUND: usize = 40;
@@ -19,10 +20,8 @@ fn on_cpu_ns() -> u64 {
 }
 
 fn main() {
-    for (case, path) in [("acads_1a", "verification/lem/acads-1a.toml"), ("paper_slope", "verification/lem/paper-slope-explicit.toml")] {
-        let base = LemInput::load(Path::new(path)).expect("committed case loads");
-        let spec = SearchSpec { entry_exit: None, refine: false, parallel: false, ..SearchSpec::default() };
-        let input = LemInput { mode: Mode::Search(spec), methods: vec![Method::Bishop], ..base };
+    for (case, path) in LEM_CASES {
+        let input = pyslope_grid_search(LemInput::load(Path::new(path)).expect("committed case loads"));
         let r = analyse(&input).expect("search succeeds");
         let mut cpu = Vec::with_capacity(ROUNDS);
         let mut wall = Vec::with_capacity(ROUNDS);

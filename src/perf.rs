@@ -411,18 +411,23 @@ impl Headline {
 /// LEM cases timed against pySlope: (name in references/pyslope.json, input).
 pub const LEM_CASES: [(&str, &str); 2] = [("paper_slope", "verification/lem/paper-slope-explicit.toml"), ("acads_1a", "verification/lem/acads-1a.toml")];
 
-/// Bishop on the default 20 x 20 x 10 grid only (no entry-exit search, no
-/// refinement, one thread): the search pySlope's timing repeats. Best of
+/// `base` with the search pySlope's timing repeats (scripts/pyslope_check.py):
+/// Bishop on the default 20 x 20 x 10 grid only, no entry-exit search, no
+/// refinement, one thread.
+pub fn pyslope_grid_search(base: crate::lem::LemInput) -> crate::lem::LemInput {
+    use crate::lem::{LemInput, Method, Mode, SearchSpec};
+    let spec = SearchSpec { entry_exit: None, refine: false, parallel: false, ..SearchSpec::default() };
+    LemInput { mode: Mode::Search(spec), methods: vec![Method::Bishop], ..base }
+}
+
+/// The time of [`pyslope_grid_search`] on the LEM input at `input`: best of
 /// `repeats` (s).
 pub fn time_lem_grid(input: &Path, repeats: usize) -> Result<f64, Error> {
-    use crate::lem::{analyse, LemInput, Method, Mode, SearchSpec};
-    let base = LemInput::load(input)?;
-    let spec = SearchSpec { entry_exit: None, refine: false, parallel: false, ..SearchSpec::default() };
-    let input = LemInput { mode: Mode::Search(spec), methods: vec![Method::Bishop], ..base };
+    let input = pyslope_grid_search(crate::lem::LemInput::load(input)?);
     let mut best = f64::INFINITY;
     for _ in 0..repeats.max(1) {
         let t = Instant::now();
-        analyse(&input)?;
+        crate::lem::analyse(&input)?;
         best = best.min(t.elapsed().as_secs_f64());
     }
     Ok(best)
