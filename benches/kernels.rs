@@ -25,7 +25,7 @@ mod common;
 use cdem::model::{Model, ELEMENT_SLOT};
 use cdem::physics::spring::SpringState;
 use cdem::solver::forces;
-use common::{slope_model, MESHES};
+use common::{meshes, slope_model};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 
 /// A smooth, deterministic displacement field (m); the kernels have no
@@ -38,10 +38,10 @@ fn displacement(model: &Model) -> Vec<f64> {
 fn bench(c: &mut Criterion) {
     let mut group = c.benchmark_group("kernels");
     let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().expect("one-thread pool");
-    for (mesh, n_hex) in MESHES {
-        let model = slope_model(mesh);
+    for (mesh, n_hex) in meshes() {
+        let model = slope_model(&mesh);
         let n_el = model.elements.len();
-        assert_eq!(n_el, n_hex, "{mesh}: expected {n_hex} hexahedra");
+        assert_eq!(n_el, n_hex, "{}: expected {n_hex} hexahedra", mesh.display());
         eprintln!(
             "hex_{n_el}: {} nodes, {} springs, K_e total {:.1} MiB, {} rayon threads",
             model.n_nodes(),

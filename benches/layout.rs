@@ -25,7 +25,7 @@ use cdem::model::{Model, ELEMENT_SLOT};
 use cdem::physics::tet_operator::{tet_element_force, TetOperators};
 use cdem::solver::forces;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use common::{slope_model, MESHES};
+use common::{meshes, slope_model};
 use rayon::prelude::*;
 
 /// Same minimum task length as `forces::element_forces`.
@@ -82,10 +82,10 @@ fn bench(c: &mut Criterion) {
     let pools: Vec<(usize, rayon::ThreadPool)> =
         [1, 2].into_iter().map(|t| (t, rayon::ThreadPoolBuilder::new().num_threads(t).build().expect("rayon pool"))).collect();
     // The paper's mesh and larger (250 hexes is too small to tell the forms apart).
-    for &(mesh, n_hex) in &MESHES[1..] {
-        let model = slope_model(mesh);
+    for (mesh, n_hex) in meshes().into_iter().skip(1) {
+        let model = slope_model(&mesh);
         let n_el = model.elements.len();
-        assert_eq!(n_el, n_hex, "{mesh}: expected {n_hex} hexahedra");
+        assert_eq!(n_el, n_hex, "{}: expected {n_hex} hexahedra", mesh.display());
         let ops = tet_operators(&model);
         eprintln!(
             "hex_{n_el}: K_e {:.1} MiB, per-tet {:.1} MiB",

@@ -21,10 +21,12 @@
 
 mod common;
 
+use std::path::Path;
+
 use cdem::model::Model;
 use cdem::scene::Scene;
 use cdem::solver::{Solver, SolverParams, State};
-use common::{slope_scene, MESHES};
+use common::{meshes, slope_scene};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 
 fn build(scene: &Scene) -> Model {
@@ -33,10 +35,10 @@ fn build(scene: &Scene) -> Model {
 
 fn step(c: &mut Criterion) {
     let mut group = c.benchmark_group("solver");
-    for (mesh, n_hex) in MESHES {
-        let scene = slope_scene(mesh);
+    for (mesh, n_hex) in meshes() {
+        let scene = slope_scene(&mesh);
         let model = build(&scene);
-        assert_eq!(model.elements.len(), n_hex, "{mesh}: expected {n_hex} hexahedra");
+        assert_eq!(model.elements.len(), n_hex, "{}: expected {n_hex} hexahedra", mesh.display());
         group.throughput(Throughput::Elements(n_hex as u64));
         for (name, block_mass) in [("step", None), ("step_lumped", Some(false))] {
             let params = SolverParams { block_mass, ..scene.solver.clone() };
@@ -57,7 +59,7 @@ fn step(c: &mut Criterion) {
 fn relax(c: &mut Criterion) {
     let mut group = c.benchmark_group("solver");
     group.sample_size(10);
-    let scene = slope_scene("slope.msh");
+    let scene = slope_scene(Path::new("slope.msh"));
     assert_eq!(scene.solver.tolerance, 1e-5, "the slope scene relaxes to 1e-5");
     let model = build(&scene);
     let n = model.elements.len();
@@ -82,8 +84,8 @@ fn relax(c: &mut Criterion) {
 fn fem(c: &mut Criterion) {
     let mut group = c.benchmark_group("solver");
     group.sample_size(10);
-    for (mesh, n_hex) in MESHES {
-        let scene = slope_scene(mesh);
+    for (mesh, n_hex) in meshes() {
+        let scene = slope_scene(&mesh);
         let sol = cdem::fem::solve_scene(&scene).expect("FEM solves");
         let t = sol.timings;
         eprintln!(

@@ -488,8 +488,9 @@ impl Default for PerfOptions {
     }
 }
 
-/// The committed meshes of the paper slope by `refine`.
-const COMMITTED: [(f64, &str); 4] =
+/// The committed meshes of the paper slope, coarse to fine: `refine` of
+/// slope.geo (1000 refine^2 hexahedra) and the path from the repository root.
+pub const SLOPE_MESHES: [(f64, &str); 4] =
     [(0.5, "verification/study/slope-h4.msh"), (1.0, "verification/cases/slope/slope.msh"), (2.0, "verification/study/slope-h1.msh"), (4.0, "verification/study/slope-h05.msh")];
 
 /// `cdem perf`: headline figures, damping table and scaling study; writes
@@ -505,7 +506,7 @@ pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn 
     };
     let mut meshes = Vec::new();
     for &r in &opts.refine {
-        let committed = COMMITTED.iter().find(|(c, _)| *c == r).map(|(_, p)| root.join(p));
+        let committed = SLOPE_MESHES.iter().find(|(c, _)| *c == r).map(|(_, p)| root.join(p));
         let mesh = match committed {
             Some(p) => p,
             None if r.fract() == 0.0 && r >= 1.0 => {
