@@ -31,16 +31,6 @@ use rayon::prelude::*;
 /// Same minimum task length as `forces::element_forces`.
 const MIN_ELEMENTS: usize = 64;
 
-fn tet_operators(model: &Model) -> TetOperators {
-    let el = &model.elements;
-    let mut ops = TetOperators::new();
-    for e in 0..el.len() {
-        let corners: Vec<[f64; 3]> = el.corners(e).iter().map(|&n| model.x0[n as usize]).collect();
-        ops.push(el.kind[e], &corners, model.materials[el.material[e] as usize].lame).expect("slope cells are valid");
-    }
-    ops
-}
-
 /// The per-tet element pass, shaped like `forces::element_forces`.
 fn per_tet_forces(model: &Model, ops: &TetOperators, u: &[f64], f_elem: &mut [f64]) {
     let el = &model.elements;
@@ -86,7 +76,7 @@ fn bench(c: &mut Criterion) {
         let model = slope_model(&mesh);
         let n_el = model.elements.len();
         assert_eq!(n_el, n_hex, "{}: expected {n_hex} hexahedra", mesh.display());
-        let ops = tet_operators(&model);
+        let ops = TetOperators::of_model(&model).expect("slope cells are valid");
         eprintln!(
             "hex_{n_el}: K_e {:.1} MiB, per-tet {:.1} MiB",
             (model.elements.k.len() * 8) as f64 / (1 << 20) as f64,
