@@ -24,8 +24,8 @@ use std::time::Instant;
 use cdem::model::{Model, ELEMENT_SLOT};
 use cdem::physics::tet_operator::{tet_element_force, TetOperators};
 use cdem::solver::forces;
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use common::{meshes, slope_model};
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use rayon::prelude::*;
 
 /// Same minimum task length as `forces::element_forces`.
@@ -44,7 +44,14 @@ fn per_tet_forces(model: &Model, ops: &TetOperators, u: &[f64], f_elem: &mut [f6
 /// This alternates the two passes on one thread (about 2e6 element-steps
 /// each) and prints the best pass of each: the least disturbed estimate, for
 /// the ratio.
-fn interleaved_best(model: &Model, ops: &TetOperators, u: &[f64], f_k: &mut [f64], f_t: &mut [f64], pool: &rayon::ThreadPool) {
+fn interleaved_best(
+    model: &Model,
+    ops: &TetOperators,
+    u: &[f64],
+    f_k: &mut [f64],
+    f_t: &mut [f64],
+    pool: &rayon::ThreadPool,
+) {
     let n_el = model.elements.len();
     let reps = (2_000_000 / n_el).max(20);
     let (mut best_k, mut best_t) = (f64::INFINITY, f64::INFINITY);
@@ -69,8 +76,10 @@ fn interleaved_best(model: &Model, ops: &TetOperators, u: &[f64], f_k: &mut [f64
 
 fn bench(c: &mut Criterion) {
     let mut group = c.benchmark_group("layout");
-    let pools: Vec<(usize, rayon::ThreadPool)> =
-        [1, 2].into_iter().map(|t| (t, rayon::ThreadPoolBuilder::new().num_threads(t).build().expect("rayon pool"))).collect();
+    let pools: Vec<(usize, rayon::ThreadPool)> = [1, 2]
+        .into_iter()
+        .map(|t| (t, rayon::ThreadPoolBuilder::new().num_threads(t).build().expect("rayon pool")))
+        .collect();
     // The paper's mesh and larger (250 hexes is too small to tell the forms apart).
     for (mesh, n_hex) in meshes().into_iter().skip(1) {
         let model = slope_model(&mesh);
@@ -96,8 +105,12 @@ fn bench(c: &mut Criterion) {
         group.throughput(Throughput::Elements(n_el as u64));
         for (threads, pool) in &pools {
             let id = |name: &str| BenchmarkId::new(format!("{name}_{threads}t"), format!("hex_{n_el}"));
-            group.bench_function(id("condensed"), |b| pool.install(|| b.iter(|| forces::element_forces(&model, &u, &mut f_k))));
-            group.bench_function(id("per_tet"), |b| pool.install(|| b.iter(|| per_tet_forces(&model, &ops, &u, &mut f_t))));
+            group.bench_function(id("condensed"), |b| {
+                pool.install(|| b.iter(|| forces::element_forces(&model, &u, &mut f_k)))
+            });
+            group.bench_function(id("per_tet"), |b| {
+                pool.install(|| b.iter(|| per_tet_forces(&model, &ops, &u, &mut f_t)))
+            });
         }
     }
     group.finish();

@@ -29,10 +29,14 @@ fn bench(c: &mut Criterion) {
                 ..SearchSpec::default()
             };
             let input = with_search(&base, spec, &Method::ALL);
-            group.bench_function(format!("{case}/full/grid_{n}x{n}x{}", n / 2), |b| b.iter(|| analyse(&input).expect("search succeeds")));
+            group.bench_function(format!("{case}/full/grid_{n}x{n}x{}", n / 2), |b| {
+                b.iter(|| analyse(&input).expect("search succeeds"))
+            });
         }
         let input = pyslope_grid_search(base);
-        group.bench_function(format!("{case}/bishop_grid_only_1thread/grid_20x20x10"), |b| b.iter(|| analyse(&input).expect("search succeeds")));
+        group.bench_function(format!("{case}/bishop_grid_only_1thread/grid_20x20x10"), |b| {
+            b.iter(|| analyse(&input).expect("search succeeds"))
+        });
     }
     group.finish();
 }

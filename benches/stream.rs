@@ -13,8 +13,8 @@
 
 use std::hint::black_box;
 
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use cdem::perf::{triad, triad_par};
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use rayon::prelude::*;
 
 /// Elements per array: 8 Mi f64 = 64 MiB.

@@ -190,25 +190,48 @@ pub struct DampingRow {
 /// Every damping kind with and without mass scaling, plus viscous damping
 /// with node-block masses, on one model, each from rest to the tolerance
 /// (at most `max_steps`).
-pub fn damping_table(model: &Model, base: &SolverParams, max_steps: usize, progress: &mut dyn FnMut(&str)) -> Vec<DampingRow> {
+pub fn damping_table(
+    model: &Model,
+    base: &SolverParams,
+    max_steps: usize,
+    progress: &mut dyn FnMut(&str),
+) -> Vec<DampingRow> {
     let mut variants = Vec::new();
     for damping in [DampingKind::Local, DampingKind::Viscous, DampingKind::Kinetic] {
         for mass_scaling in [true, false] {
             variants.push(SolverParams { damping, mass_scaling, block_mass: Some(false), max_steps, ..base.clone() });
         }
     }
-    variants.push(SolverParams { damping: DampingKind::Viscous, mass_scaling: true, block_mass: Some(true), max_steps, ..base.clone() });
+    variants.push(SolverParams {
+        damping: DampingKind::Viscous,
+        mass_scaling: true,
+        block_mass: Some(true),
+        max_steps,
+        ..base.clone()
+    });
     variants
         .into_iter()
         .map(|p| {
             let name = format!("{:?}", p.damping).to_lowercase();
-            progress(&format!("damping: {name}, mass scaling {}, block masses {}", p.mass_scaling, p.uses_block_mass()));
+            progress(&format!(
+                "damping: {name}, mass scaling {}, block masses {}",
+                p.mass_scaling,
+                p.uses_block_mass()
+            ));
             let t = Instant::now();
             let (outcome, steps, max_abs_uz) = match time_dr(model, &p) {
                 Ok(f) => ((if f.converged { "converged" } else { "max_steps" }).to_string(), f.steps, f.max_abs_uz),
                 Err(e) => (e.to_string(), 0, f64::NAN),
             };
-            DampingRow { damping: name, mass_scaling: p.mass_scaling, block_mass: p.uses_block_mass(), outcome, steps, seconds: t.elapsed().as_secs_f64(), max_abs_uz }
+            DampingRow {
+                damping: name,
+                mass_scaling: p.mass_scaling,
+                block_mass: p.uses_block_mass(),
+                outcome,
+                steps,
+                seconds: t.elapsed().as_secs_f64(),
+                max_abs_uz,
+            }
         })
         .collect()
 }
@@ -236,7 +259,12 @@ pub struct ScalingRow {
 }
 
 /// Cost against size on `scene` with the meshes given as `(refine, mesh)`.
-pub fn scaling_study(scene: &Scene, meshes: &[(f64, PathBuf)], lumped_up_to: usize, progress: &mut dyn FnMut(&str)) -> Result<Vec<ScalingRow>, Error> {
+pub fn scaling_study(
+    scene: &Scene,
+    meshes: &[(f64, PathBuf)],
+    lumped_up_to: usize,
+    progress: &mut dyn FnMut(&str),
+) -> Result<Vec<ScalingRow>, Error> {
     let mut rows = Vec::new();
     for (refine, mesh) in meshes {
         let mut s = scene.clone();
@@ -311,7 +339,10 @@ pub fn slope_mesh(slope_geo: &Path, refine: u32, dir: &Path) -> Result<PathBuf, 
     std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
     let geo = dir.join(format!("slope-r{refine}.geo"));
     let include = slope_geo.canonicalize().map_err(|e| Error::io(slope_geo, e))?;
-    let text = format!("// The paper slope at refine = {refine} (cdem perf).\nrefine = {refine};\nInclude \"{}\";\n", include.display());
+    let text = format!(
+        "// The paper slope at refine = {refine} (cdem perf).\nrefine = {refine};\nInclude \"{}\";\n",
+        include.display()
+    );
     std::fs::write(&geo, text).map_err(|e| Error::io(&geo, e))?;
     crate::mesh::gmsh::regenerate(&geo, &msh)?;
     Ok(msh)
@@ -323,7 +354,11 @@ pub fn damping_markdown(damping: &[DampingRow]) -> String {
     if !damping.is_empty() {
         md.push_str("| damping | mass scaling | block masses | outcome | steps | wall (s) | max abs u_z (m) |\n|---|---|---|---|---|---|---|\n");
         for r in damping {
-            let _ = writeln!(md, "| {} | {} | {} | {} | {} | {:.2} | {:.4e} |", r.damping, r.mass_scaling, r.block_mass, r.outcome, r.steps, r.seconds, r.max_abs_uz);
+            let _ = writeln!(
+                md,
+                "| {} | {} | {} | {} | {} | {:.2} | {:.4e} |",
+                r.damping, r.mass_scaling, r.block_mass, r.outcome, r.steps, r.seconds, r.max_abs_uz
+            );
         }
     }
     md
@@ -339,8 +374,21 @@ pub fn scaling_markdown(scaling: &[ScalingRow]) -> String {
             let _ = writeln!(
                 md,
                 "| {} | {} | {} | {} | {:.2} | {:.3} | {:.2} | {:.1} | {}{} | {} | {:.2} | {} | {:.3} | {:.1} |",
-                r.refine, r.elements, r.node_copies, r.springs, r.build_s, 1e3 * r.step_s, r.mega_element_steps_per_s, r.gbs,
-                r.dr_steps, if r.dr_converged { "" } else { " (not converged)" }, lumped, r.dr_s, r.fem_dofs, r.fem_s, r.dr_s / r.fem_s
+                r.refine,
+                r.elements,
+                r.node_copies,
+                r.springs,
+                r.build_s,
+                1e3 * r.step_s,
+                r.mega_element_steps_per_s,
+                r.gbs,
+                r.dr_steps,
+                if r.dr_converged { "" } else { " (not converged)" },
+                lumped,
+                r.dr_s,
+                r.fem_dofs,
+                r.fem_s,
+                r.dr_s / r.fem_s
             );
         }
         if scaling.len() >= 2 {
@@ -399,17 +447,27 @@ impl Headline {
         let _ = writeln!(
             md,
             "| DR to 1e-5 / FEM solve (paper slope) | {:.3} s ({} steps) / {:.4} s ({} dofs) = {:.1}x | <= 3x |",
-            self.dr_block.seconds, self.dr_block.steps, self.fem_s, self.fem_dofs, self.dr_over_fem()
+            self.dr_block.seconds,
+            self.dr_block.steps,
+            self.fem_s,
+            self.fem_dofs,
+            self.dr_over_fem()
         );
         for (case, ours, py) in &self.lem {
-            let _ = writeln!(md, "| LEM Bishop grid 20x20x10, {case}: pySlope / ours | {py:.3} s / {:.2} ms = {:.0}x | >= 100x |", 1e3 * ours, py / ours);
+            let _ = writeln!(
+                md,
+                "| LEM Bishop grid 20x20x10, {case}: pySlope / ours | {py:.3} s / {:.2} ms = {:.0}x | >= 100x |",
+                1e3 * ours,
+                py / ours
+            );
         }
         md
     }
 }
 
 /// LEM cases timed against pySlope: (name in references/pyslope.json, input).
-pub const LEM_CASES: [(&str, &str); 2] = [("paper_slope", "verification/lem/paper-slope-explicit.toml"), ("acads_1a", "verification/lem/acads-1a.toml")];
+pub const LEM_CASES: [(&str, &str); 2] =
+    [("paper_slope", "verification/lem/paper-slope-explicit.toml"), ("acads_1a", "verification/lem/acads-1a.toml")];
 
 /// `base` with the search pySlope's timing repeats (scripts/pyslope_check.py):
 /// Bishop on the default 20 x 20 x 10 grid only, no entry-exit search, no
@@ -490,8 +548,12 @@ impl Default for PerfOptions {
 
 /// The committed meshes of the paper slope, coarse to fine: `refine` of
 /// slope.geo (1000 refine^2 hexahedra) and the path from the repository root.
-pub const SLOPE_MESHES: [(f64, &str); 4] =
-    [(0.5, "verification/study/slope-h4.msh"), (1.0, "verification/cases/slope/slope.msh"), (2.0, "verification/study/slope-h1.msh"), (4.0, "verification/study/slope-h05.msh")];
+pub const SLOPE_MESHES: [(f64, &str); 4] = [
+    (0.5, "verification/study/slope-h4.msh"),
+    (1.0, "verification/cases/slope/slope.msh"),
+    (2.0, "verification/study/slope-h1.msh"),
+    (4.0, "verification/study/slope-h05.msh"),
+];
 
 /// `cdem perf`: headline figures, damping table and scaling study; writes
 /// `perf.md`, `damping.csv`, `scaling.csv` and `scaling.png` to `out`.
@@ -499,11 +561,7 @@ pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn 
     std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
     let (scene, model) = paper_slope(root)?;
     let head = headline(root, &scene, &model, progress)?;
-    let damping = if opts.damping {
-        damping_table(&model, &scene.solver, 400_000, progress)
-    } else {
-        Vec::new()
-    };
+    let damping = if opts.damping { damping_table(&model, &scene.solver, 400_000, progress) } else { Vec::new() };
     let mut meshes = Vec::new();
     for &r in &opts.refine {
         let committed = SLOPE_MESHES.iter().find(|(c, _)| *c == r).map(|(_, p)| root.join(p));
@@ -513,7 +571,11 @@ pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn 
                 progress(&format!("gmsh: slope at refine {r}"));
                 slope_mesh(&root.join("verification/cases/slope/slope.geo"), r as u32, &out.join("meshes"))?
             }
-            None => return Err(Error::Gmsh(format!("refine {r}: only the committed 0.5, 1, 2, 4 or a whole number can be meshed"))),
+            None => {
+                return Err(Error::Gmsh(format!(
+                    "refine {r}: only the committed 0.5, 1, 2, 4 or a whole number can be meshed"
+                )))
+            }
         };
         meshes.push((r, mesh.canonicalize().map_err(|e| Error::io(&mesh, e))?));
     }
@@ -523,10 +585,23 @@ pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn 
     write_csv(&out.join("scaling.csv"), &scaling)?;
     if scaling.len() >= 2 {
         use crate::output::figures::{line_plot, Scale, Series};
-        let pts = |f: &dyn Fn(&ScalingRow) -> f64| scaling.iter().map(|r| (r.elements as f64, f(r))).collect::<Vec<_>>();
+        let pts =
+            |f: &dyn Fn(&ScalingRow) -> f64| scaling.iter().map(|r| (r.elements as f64, f(r))).collect::<Vec<_>>();
         let (step, dr, fem) = (pts(&|r| r.step_s), pts(&|r| r.dr_s), pts(&|r| r.fem_s));
-        let series = [Series { name: "time per step", points: &step }, Series { name: "DR to 1e-5", points: &dr }, Series { name: "FEM solve", points: &fem }];
-        line_plot(&out.join("scaling.png"), "Paper slope: cost against size", "elements", "wall time (s)", &series, Scale::Log, Scale::Log)?;
+        let series = [
+            Series { name: "time per step", points: &step },
+            Series { name: "DR to 1e-5", points: &dr },
+            Series { name: "FEM solve", points: &fem },
+        ];
+        line_plot(
+            &out.join("scaling.png"),
+            "Paper slope: cost against size",
+            "elements",
+            "wall time (s)",
+            &series,
+            Scale::Log,
+            Scale::Log,
+        )?;
     }
     let md = format!(
         "# Performance (cdem perf)\n\n## Headline (paper slope, {} threads)\n\n{}\n## Damping (paper slope, to 1e-5)\n\n{}\n## Growth with size\n\n{}",

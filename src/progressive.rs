@@ -87,16 +87,24 @@ pub struct ProgressiveResult {
 }
 
 fn max_displacement_since(u: &[f64], u0: &[f64]) -> f64 {
-    u.chunks(3).zip(u0.chunks(3)).map(|(a, b)| ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()).fold(0.0, f64::max)
+    u.chunks(3)
+        .zip(u0.chunks(3))
+        .map(|(a, b)| ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt())
+        .fold(0.0, f64::max)
 }
 
 /// Runs both phases of a scene.
-pub fn run_progressive(scene: &Scene, params: &FailureParams, progress: &mut dyn FnMut(usize, f64)) -> Result<ProgressiveResult, Error> {
+pub fn run_progressive(
+    scene: &Scene,
+    params: &FailureParams,
+    progress: &mut dyn FnMut(usize, f64),
+) -> Result<ProgressiveResult, Error> {
     let model = build_model(scene)?;
     let mut solver = Solver::new(&model, scene.solver.clone())?;
     let mut state = State::new(&model);
     // Phase 1.
-    let elastic = solver.relax(&model, &mut state, scene.output.history_every, 100, &mut |st, r| progress(st.step, r))?;
+    let elastic =
+        solver.relax(&model, &mut state, scene.output.history_every, 100, &mut |st, r| progress(st.step, r))?;
     let u_elastic = state.u.clone();
     // Phase 2.
     solver.set_failure(&model, true);
@@ -121,7 +129,14 @@ pub fn run_progressive(scene: &Scene, params: &FailureParams, progress: &mut dyn
             let failed_tension = state.springs.status.iter().filter(|s| **s == SpringStatus::Tension).count();
             let failed_shear = state.springs.status.iter().filter(|s| **s == SpringStatus::Shear).count();
             let max_displacement = max_displacement_since(&state.u, &u_elastic);
-            stages.push(Stage { step: k, failed_tension, failed_shear, max_displacement, kinetic_energy: kinetic, unbalanced_ratio: ratio });
+            stages.push(Stage {
+                step: k,
+                failed_tension,
+                failed_shear,
+                max_displacement,
+                kinetic_energy: kinetic,
+                unbalanced_ratio: ratio,
+            });
             stage_u.push(state.u.clone());
         }
         if k % 100 == 0 {

@@ -100,10 +100,12 @@ pub fn reproduce(out: &Path, regenerate: bool, progress: &mut dyn FnMut(&str)) -
     // 2. Column.
     progress("column");
     let top = analytic_column_top();
-    for (name, file, tol) in [("column, springs", "column.toml", 0.01), ("column, merged", "column-merged.toml", 1e-5)] {
+    for (name, file, tol) in [("column, springs", "column.toml", 0.01), ("column, merged", "column-merged.toml", 1e-5)]
+    {
         let scene = Scene::load(&Path::new("verification/cases/column").join(file))?;
         let r = run_scene(&scene, &mut |_, _| {})?;
-        let top_nodes: Vec<usize> = (0..r.model.n_nodes()).filter(|&i| (r.model.x0[i][2] - 40.0).abs() < 1e-9).collect();
+        let top_nodes: Vec<usize> =
+            (0..r.model.n_nodes()).filter(|&i| (r.model.x0[i][2] - 40.0).abs() < 1e-9).collect();
         let uz = top_nodes.iter().map(|&i| r.state.u[3 * i + 2]).sum::<f64>() / top_nodes.len() as f64;
         rep.checks.push(Check::new(name, "top u_z (m)", uz, top, tol, "references/column.md", r.summary.wall_s));
     }
@@ -120,26 +122,95 @@ pub fn reproduce(out: &Path, regenerate: bool, progress: &mut dyn FnMut(&str)) -
         Check::new("paper slope, CDEM vs FEM", "max |u_z| (m)", c.max_abs_uz, f.max_abs_uz, 0.01, "cdem fem", c.wall_s),
         Check::new("paper slope, CDEM vs FEM", "min sigma_zz (Pa)", cs, fs, 0.01, "cdem fem", c.wall_s),
         Check::new("paper slope, CDEM vs FEM", "relative L2 error of u", l2, 0.0, 0.01, "cdem fem", c.wall_s),
-        Check::new("paper slope, CDEM vs paper", "max |u_z| (m)", c.max_abs_uz, 4.18e-2, f64::NAN, "references/paper.md", c.wall_s),
-        Check::new("paper slope, FEM vs ANSYS (paper)", "max |u_z| (m)", f.max_abs_uz, 4.16e-2, f64::NAN, "references/paper.md", f.wall_s),
-        Check::new("paper slope, CDEM vs paper", "min sigma_zz (Pa)", cs, -7.89e5, f64::NAN, "references/paper.md", c.wall_s),
-        Check::new("paper slope, FEM vs ANSYS (paper)", "min sigma_zz (Pa)", fs, -7.81e5, f64::NAN, "references/paper.md", f.wall_s),
+        Check::new(
+            "paper slope, CDEM vs paper",
+            "max |u_z| (m)",
+            c.max_abs_uz,
+            4.18e-2,
+            f64::NAN,
+            "references/paper.md",
+            c.wall_s,
+        ),
+        Check::new(
+            "paper slope, FEM vs ANSYS (paper)",
+            "max |u_z| (m)",
+            f.max_abs_uz,
+            4.16e-2,
+            f64::NAN,
+            "references/paper.md",
+            f.wall_s,
+        ),
+        Check::new(
+            "paper slope, CDEM vs paper",
+            "min sigma_zz (Pa)",
+            cs,
+            -7.89e5,
+            f64::NAN,
+            "references/paper.md",
+            c.wall_s,
+        ),
+        Check::new(
+            "paper slope, FEM vs ANSYS (paper)",
+            "min sigma_zz (Pa)",
+            fs,
+            -7.81e5,
+            f64::NAN,
+            "references/paper.md",
+            f.wall_s,
+        ),
     ]);
-    let _ = writeln!(rep.md, "## Elastic slope (Figs. 6-7)\n\nCDEM: {} steps, {:.1} s; FEM: {:.2} s.\n", c.steps, c.wall_s, f.wall_s);
+    let _ = writeln!(
+        rep.md,
+        "## Elastic slope (Figs. 6-7)\n\nCDEM: {} steps, {:.1} s; FEM: {:.2} s.\n",
+        c.steps, c.wall_s, f.wall_s
+    );
     let stress = r.stress.clone().unwrap_or_default();
     let figs: [(&str, &str, Vec<crate::output::figures::Patch>); 4] = [
         ("fig6-szz-cdem.png", "CDEM sigma_zz (Pa)", front_patches(&r.model, |e| stress[e][2])),
-        ("fig6-szz-fem.png", "FEM sigma_zz (Pa)", front_patches_of_cells(&fem.coords, &fem.cells, |e| fem.stress[e][2])),
-        ("fig7-uz-cdem.png", "CDEM u_z (m)", front_patches(&r.model, |e| element_mean_displacement(&r.model, &r.state.u, e, 2))),
-        ("fig7-uz-fem.png", "FEM u_z (m)", front_patches_of_cells(&fem.coords, &fem.cells, |e| fem.cells[e].corners().iter().map(|&n| fem.u[3 * n + 2]).sum::<f64>() / fem.cells[e].corners().len() as f64)),
+        (
+            "fig6-szz-fem.png",
+            "FEM sigma_zz (Pa)",
+            front_patches_of_cells(&fem.coords, &fem.cells, |e| fem.stress[e][2]),
+        ),
+        (
+            "fig7-uz-cdem.png",
+            "CDEM u_z (m)",
+            front_patches(&r.model, |e| element_mean_displacement(&r.model, &r.state.u, e, 2)),
+        ),
+        (
+            "fig7-uz-fem.png",
+            "FEM u_z (m)",
+            front_patches_of_cells(&fem.coords, &fem.cells, |e| {
+                fem.cells[e].corners().iter().map(|&n| fem.u[3 * n + 2]).sum::<f64>()
+                    / fem.cells[e].corners().len() as f64
+            }),
+        ),
     ];
     for (file, title, patches) in &figs {
         section_contour(&rep.path(file), title, title, patches, &[])?;
         rep.figure(title, file);
     }
     let ratio: Vec<(f64, f64)> = r.report.history.iter().map(|h| (h.step as f64, h.unbalanced_ratio)).collect();
-    let ke: Vec<(f64, f64)> = r.report.history.iter().map(|h| (h.step as f64, h.kinetic_energy / r.report.history.iter().map(|h| h.kinetic_energy).fold(0.0, f64::max))).collect();
-    line_plot(&rep.path("history-slope.png"), "Elastic slope: convergence of dynamic relaxation", "step", "value", &[Series { name: "unbalanced-force ratio", points: &ratio }, Series { name: "kinetic energy / max", points: &ke }], Scale::Linear, Scale::Log)?;
+    let ke: Vec<(f64, f64)> = r
+        .report
+        .history
+        .iter()
+        .map(|h| {
+            (h.step as f64, h.kinetic_energy / r.report.history.iter().map(|h| h.kinetic_energy).fold(0.0, f64::max))
+        })
+        .collect();
+    line_plot(
+        &rep.path("history-slope.png"),
+        "Elastic slope: convergence of dynamic relaxation",
+        "step",
+        "value",
+        &[
+            Series { name: "unbalanced-force ratio", points: &ratio },
+            Series { name: "kinetic energy / max", points: &ke },
+        ],
+        Scale::Linear,
+        Scale::Log,
+    )?;
     rep.figure("convergence history", "history-slope.png");
 
     // 4. Limit equilibrium.
@@ -155,7 +226,15 @@ pub fn reproduce(out: &Path, regenerate: bool, progress: &mut dyn FnMut(&str)) -
         ]);
     }
     let fs_lem = paper.fs.bishop.unwrap_or(f64::NAN);
-    rep.checks.push(Check::new("paper slope LEM", "Bishop FS (0.01 absolute)", fs_lem, 1.084, 0.01 / 1.084, "references/paper.md", paper.wall_s));
+    rep.checks.push(Check::new(
+        "paper slope LEM",
+        "Bishop FS (0.01 absolute)",
+        fs_lem,
+        1.084,
+        0.01 / 1.084,
+        "references/paper.md",
+        paper.wall_s,
+    ));
 
     // 5. Eq. 21 and K_i on the slip circle (Fig. 9).
     progress("eq. 21 on the slip circle");
@@ -168,27 +247,65 @@ pub fn reproduce(out: &Path, regenerate: bool, progress: &mut dyn FnMut(&str)) -
     let pts_fem = from_stresses(&mesh, &fem_s.coords, "slip", &SLIP_CIRCLE, &fem_s.stress).unwrap_or_default();
     let (k_sp, k_fem) = (safety_factors(&pts_sp, 16e3, tan_phi), safety_factors(&pts_fem, 16e3, tan_phi));
     rep.checks.extend([
-        Check::new("slip circle", "eq. 21 K, CDEM springs vs LEM", k_sp.k, fs_lem, 0.02, "references/lem.md", rs.summary.wall_s),
-        Check::new("slip circle", "eq. 21 K, FEM stresses vs LEM", k_fem.k, fs_lem, f64::NAN, "references/lem.md", fem_s.summary.wall_s),
-        Check::new("slip circle", "eq. 21 K, CDEM springs vs paper's 1.086", k_sp.k, 1.086, f64::NAN, "references/paper.md", rs.summary.wall_s),
+        Check::new(
+            "slip circle",
+            "eq. 21 K, CDEM springs vs LEM",
+            k_sp.k,
+            fs_lem,
+            0.02,
+            "references/lem.md",
+            rs.summary.wall_s,
+        ),
+        Check::new(
+            "slip circle",
+            "eq. 21 K, FEM stresses vs LEM",
+            k_fem.k,
+            fs_lem,
+            f64::NAN,
+            "references/lem.md",
+            fem_s.summary.wall_s,
+        ),
+        Check::new(
+            "slip circle",
+            "eq. 21 K, CDEM springs vs paper's 1.086",
+            k_sp.k,
+            1.086,
+            f64::NAN,
+            "references/paper.md",
+            rs.summary.wall_s,
+        ),
     ]);
     let s: Vec<f64> = pts_sp.iter().map(|p| p.s).collect();
     let seg = sign_segments(&s, &k_sp.k_i, 2.0);
     let _ = writeln!(rep.md, "## Slip circle (Fig. 9)\n\nK_i sign segments (CDEM springs, toe to crest, runs under 2 m merged): {}. The paper: ab -, bc +, cd -, de +.\n", seg.iter().map(|g| format!("{} {:.0}-{:.0} m", if g.sign > 0 { "+" } else { "-" }, g.s0, g.s1)).collect::<Vec<_>>().join(", "));
     let ki_sp: Vec<(f64, f64)> = pts_sp.iter().zip(&k_sp.k_i).map(|(p, &k)| (p.s, k.clamp(-5.0, 5.0))).collect();
     let ki_fem: Vec<(f64, f64)> = pts_fem.iter().zip(&k_fem.k_i).map(|(p, &k)| (p.s, k.clamp(-5.0, 5.0))).collect();
-    line_plot(&rep.path("fig9-ki.png"), "K_i along the slip surface, toe (s = 0) to crest (clamped to +-5)", "s (m)", "K_i", &[Series { name: "CDEM springs", points: &ki_sp }, Series { name: "FEM stresses", points: &ki_fem }], Scale::Linear, Scale::Linear)?;
+    line_plot(
+        &rep.path("fig9-ki.png"),
+        "K_i along the slip surface, toe (s = 0) to crest (clamped to +-5)",
+        "s (m)",
+        "K_i",
+        &[Series { name: "CDEM springs", points: &ki_sp }, Series { name: "FEM stresses", points: &ki_fem }],
+        Scale::Linear,
+        Scale::Linear,
+    )?;
     let r_c = ((SLIP_CIRCLE.toe[0] - SLIP_CIRCLE.xc).powi(2) + (SLIP_CIRCLE.toe[1] - SLIP_CIRCLE.zc).powi(2)).sqrt();
     let a0 = (SLIP_CIRCLE.toe[1] - SLIP_CIRCLE.zc).atan2(SLIP_CIRCLE.toe[0] - SLIP_CIRCLE.xc);
     let a1 = (40.0 - SLIP_CIRCLE.zc).atan2((r_c * r_c - (40.0 - SLIP_CIRCLE.zc).powi(2)).sqrt());
-    let arc: Vec<(f64, f64)> = (0..=100).map(|k| a0 + (a1 - a0) * k as f64 / 100.0).map(|a| (SLIP_CIRCLE.xc + r_c * a.cos(), SLIP_CIRCLE.zc + r_c * a.sin())).collect();
+    let arc: Vec<(f64, f64)> = (0..=100)
+        .map(|k| a0 + (a1 - a0) * k as f64 / 100.0)
+        .map(|a| (SLIP_CIRCLE.xc + r_c * a.cos(), SLIP_CIRCLE.zc + r_c * a.sin()))
+        .collect();
     let p = front_patches(&rs.model, |e| element_mean_displacement(&rs.model, &rs.state.u, e, 2));
     section_contour(&rep.path("fig9-surface.png"), "Slip surface (LEM critical circle) on u_z", "u_z (m)", &p, &[arc])?;
     rep.figure("slip surface", "fig9-surface.png");
     rep.figure("K_i", "fig9-ki.png");
 
     // 6-7. Progressive failure: the slope (Fig. 10) and Wulong (Fig. 14).
-    for (name, path, prefix) in [("slope", "verification/cases/slope-slip/slope-slip.toml", "fig10"), ("Wulong", "verification/cases/wulong/wulong.toml", "fig14")] {
+    for (name, path, prefix) in [
+        ("slope", "verification/cases/slope-slip/slope-slip.toml", "fig10"),
+        ("Wulong", "verification/cases/wulong/wulong.toml", "fig14"),
+    ] {
         if !Path::new(path).exists() {
             continue;
         }
@@ -218,7 +335,8 @@ pub fn reproduce(out: &Path, regenerate: bool, progress: &mut dyn FnMut(&str)) -
     progress("error against run time");
     let study_dir = out.join("study");
     crate::study::run_study(&study_dir, progress)?;
-    let table = std::fs::read_to_string(study_dir.join("study.md")).map_err(|e| Error::io(study_dir.join("study.md"), e))?;
+    let table =
+        std::fs::read_to_string(study_dir.join("study.md")).map_err(|e| Error::io(study_dir.join("study.md"), e))?;
     let _ = writeln!(rep.md, "## Error against run time\n\nRelative L2 error of the displacement field (column: analytic; slope: FEM on the 0.5 m mesh), one factor varied at a time.\n\n{table}");
     rep.figure("column", "study/study-column.png");
     rep.figure("slope", "study/study-slope.png");

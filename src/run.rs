@@ -96,10 +96,20 @@ pub fn run_scene(scene: &Scene, progress: &mut dyn FnMut(usize, f64)) -> Result<
 }
 
 fn gcd(a: usize, b: usize) -> usize {
-    if b == 0 { a } else { gcd(b, a % b) }
+    if b == 0 {
+        a
+    } else {
+        gcd(b, a % b)
+    }
 }
 
-pub fn summarize(model: &Model, state: &State, report: &RunReport, stress: Option<&[[f64; 6]]>, wall_s: f64) -> Summary {
+pub fn summarize(
+    model: &Model,
+    state: &State,
+    report: &RunReport,
+    stress: Option<&[[f64; 6]]>,
+    wall_s: f64,
+) -> Summary {
     let u = &state.u;
     let uz = u.chunks(3).map(|d| d[2]);
     let mut failed = FailedSprings::default();

@@ -60,7 +60,13 @@ fn key(x: [f64; 3]) -> [i64; 3] {
 }
 impl Nodal {
     fn new(fem: &FemSolution) -> Self {
-        Self(fem.coords.iter().enumerate().map(|(i, &x)| (key(x), [fem.u[3 * i], fem.u[3 * i + 1], fem.u[3 * i + 2]])).collect())
+        Self(
+            fem.coords
+                .iter()
+                .enumerate()
+                .map(|(i, &x)| (key(x), [fem.u[3 * i], fem.u[3 * i + 1], fem.u[3 * i + 2]]))
+                .collect(),
+        )
     }
 }
 impl Reference for Nodal {
@@ -85,7 +91,10 @@ fn l2_error(points: impl Iterator<Item = ([f64; 3], [f64; 3], f64)>, reference: 
 fn cdem_point(case: &str, varied: &str, scene: &Scene, reference: &dyn Reference) -> Result<StudyRow, Error> {
     let r = run_scene(scene, &mut |_, _| {})?;
     let m = &r.model;
-    let err = l2_error((0..m.n_nodes()).map(|i| (m.x0[i], [r.state.u[3 * i], r.state.u[3 * i + 1], r.state.u[3 * i + 2]], m.mass[i])), reference);
+    let err = l2_error(
+        (0..m.n_nodes()).map(|i| (m.x0[i], [r.state.u[3 * i], r.state.u[3 * i + 1], r.state.u[3 * i + 2]], m.mass[i])),
+        reference,
+    );
     Ok(StudyRow {
         case: case.into(),
         method: "cdem".into(),
@@ -103,7 +112,10 @@ fn fem_point(case: &str, scene: &Scene, reference: &dyn Reference) -> Result<(St
     let sol = solve_scene(scene)?;
     // Nodal weights: one per node (the FEM meshes are uniform enough here;
     // the study compares orders of magnitude).
-    let err = l2_error((0..sol.coords.len()).map(|i| (sol.coords[i], [sol.u[3 * i], sol.u[3 * i + 1], sol.u[3 * i + 2]], 1.0)), reference);
+    let err = l2_error(
+        (0..sol.coords.len()).map(|i| (sol.coords[i], [sol.u[3 * i], sol.u[3 * i + 1], sol.u[3 * i + 2]], 1.0)),
+        reference,
+    );
     let row = StudyRow {
         case: case.into(),
         method: "fem".into(),
@@ -222,8 +234,12 @@ pub fn run_study(out: &Path, progress: &mut dyn FnMut(&str)) -> Result<Vec<Study
             v.sort_by(|a, b| a.0.total_cmp(&b.0));
             v
         };
-        let (res, stiff, tol, fem) =
-            (pick("cdem", &["base", "resolution"]), pick("cdem", &["base", "stiffness"]), pick("cdem", &["base", "tolerance"]), pick("fem", &["resolution"]));
+        let (res, stiff, tol, fem) = (
+            pick("cdem", &["base", "resolution"]),
+            pick("cdem", &["base", "stiffness"]),
+            pick("cdem", &["base", "tolerance"]),
+            pick("fem", &["resolution"]),
+        );
         let series = [
             Series { name: "CDEM, mesh resolution", points: &res },
             Series { name: "CDEM, joint stiffness", points: &stiff },
@@ -231,11 +247,23 @@ pub fn run_study(out: &Path, progress: &mut dyn FnMut(&str)) -> Result<Vec<Study
             Series { name: "FEM, mesh resolution", points: &fem },
         ];
         let title = format!("{case}: displacement error against run time");
-        line_plot(&out.join(format!("study-{case}.png")), &title, "wall time (s)", "relative L2 error of u", &series, Scale::Log, Scale::Log)?;
+        line_plot(
+            &out.join(format!("study-{case}.png")),
+            &title,
+            "wall time (s)",
+            "relative L2 error of u",
+            &series,
+            Scale::Log,
+            Scale::Log,
+        )?;
     }
     let mut md = String::from("| case | method | varied | elements | E_j (Pa) | tolerance | error | wall (s) | steps |\n|---|---|---|---|---|---|---|---|---|\n");
     for r in &rows {
-        let _ = writeln!(md, "| {} | {} | {} | {} | {:.0e} | {:.0e} | {:.3e} | {:.3} | {} |", r.case, r.method, r.varied, r.elements, r.joint_modulus, r.tolerance, r.error, r.wall_s, r.steps);
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} | {:.0e} | {:.0e} | {:.3e} | {:.3} | {} |",
+            r.case, r.method, r.varied, r.elements, r.joint_modulus, r.tolerance, r.error, r.wall_s, r.steps
+        );
     }
     crate::output::write_atomic(&out.join("study.md"), md.as_bytes())?;
     Ok(rows)

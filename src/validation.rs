@@ -28,9 +28,25 @@ pub struct Check {
 
 impl Check {
     /// A check; a NaN `tolerance` makes a reported-only row.
-    pub fn new(case: &str, quantity: &str, ours: f64, reference: f64, tolerance: f64, source: &str, seconds: f64) -> Self {
+    pub fn new(
+        case: &str,
+        quantity: &str,
+        ours: f64,
+        reference: f64,
+        tolerance: f64,
+        source: &str,
+        seconds: f64,
+    ) -> Self {
         let tolerance = (!tolerance.is_nan()).then_some(tolerance);
-        Self { case: case.into(), quantity: quantity.into(), ours, reference, tolerance, source: source.into(), seconds }
+        Self {
+            case: case.into(),
+            quantity: quantity.into(),
+            ours,
+            reference,
+            tolerance,
+            source: source.into(),
+            seconds,
+        }
     }
     pub fn rel_error(&self) -> f64 {
         if self.reference == 0.0 {
@@ -85,8 +101,15 @@ pub fn recorded() -> Vec<(String, f64, Vec<Check>)> {
     let mut out = Vec::new();
     for e in std::fs::read_dir(rows_dir()).into_iter().flatten().flatten() {
         let path = e.path();
-        let age = e.metadata().ok().and_then(|m| m.modified().ok()).and_then(|t| t.elapsed().ok()).map_or(f64::INFINITY, |d| d.as_secs_f64());
-        if let Some(rows) = std::fs::read_to_string(&path).ok().and_then(|t| serde_json::from_str::<Vec<Check>>(&t).ok()) {
+        let age = e
+            .metadata()
+            .ok()
+            .and_then(|m| m.modified().ok())
+            .and_then(|t| t.elapsed().ok())
+            .map_or(f64::INFINITY, |d| d.as_secs_f64());
+        if let Some(rows) =
+            std::fs::read_to_string(&path).ok().and_then(|t| serde_json::from_str::<Vec<Check>>(&t).ok())
+        {
             out.push((path.file_stem().unwrap_or_default().to_string_lossy().into_owned(), age, rows));
         }
     }

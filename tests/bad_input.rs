@@ -7,7 +7,8 @@ use std::process::Command;
 fn run(scene: &str) -> (bool, String, PathBuf) {
     let out = std::env::temp_dir().join(format!("cdem-bad-{}-{}", scene.replace('/', "_"), std::process::id()));
     let _ = std::fs::remove_dir_all(&out);
-    let o = Command::new(env!("CARGO_BIN_EXE_cdem")).args(["run", scene, "--out", out.to_str().unwrap()]).output().unwrap();
+    let o =
+        Command::new(env!("CARGO_BIN_EXE_cdem")).args(["run", scene, "--out", out.to_str().unwrap()]).output().unwrap();
     (o.status.success(), String::from_utf8_lossy(&o.stderr).into_owned(), out)
 }
 

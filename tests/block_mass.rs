@@ -77,7 +77,10 @@ fn paper_slope_same_equilibrium_in_fewer_steps() {
     let b = run_scene(&block, &mut |_, _| {}).unwrap();
     assert!(a.summary.converged && b.summary.converged);
     let diff = relative_l2_between_copies(&a.model, &b.state.u, &a.state.u);
-    println!("paper slope: lumped {} steps, block {} steps; relative L2 difference {diff:.2e}", a.summary.steps, b.summary.steps);
+    println!(
+        "paper slope: lumped {} steps, block {} steps; relative L2 difference {diff:.2e}",
+        a.summary.steps, b.summary.steps
+    );
     println!("max |u_z|: lumped {:.6e}, block {:.6e}", a.summary.max_abs_uz, b.summary.max_abs_uz);
     assert!(5 * b.summary.steps < a.summary.steps, "block {} vs lumped {} steps", b.summary.steps, a.summary.steps);
     // Both stop at an unbalanced ratio of 1e-5; their fields agree to 1e-3.

@@ -78,11 +78,30 @@ fn column_with_stiff_springs_within_one_percent() {
     let err_el = element_stress_error(&r);
     println!("springs: top u_z {uz:.5e} (exact {exact:.5e}, err {err_u:.2e}); base {:.5e} (err {err_base:.2e}); element sigma_zz max err {err_el:.2e}", base_stress(&r));
     let t = r.summary.wall_s;
-    cdem::validation::record("column_springs", &[
-        Check::new("column, springs E_j/L=1e11", "top u_z (m)", uz, exact, 0.01, "references/column.md", t),
-        Check::new("column, springs E_j/L=1e11", "base sigma_zz from reactions (Pa)", base_stress(&r), szz_exact(0.0), 0.01, "references/column.md", t),
-        Check::new("column, springs E_j/L=1e11", "max element sigma_zz error vs centroid value", err_el, 0.0, 0.01, "references/column.md", t),
-    ]);
+    cdem::validation::record(
+        "column_springs",
+        &[
+            Check::new("column, springs E_j/L=1e11", "top u_z (m)", uz, exact, 0.01, "references/column.md", t),
+            Check::new(
+                "column, springs E_j/L=1e11",
+                "base sigma_zz from reactions (Pa)",
+                base_stress(&r),
+                szz_exact(0.0),
+                0.01,
+                "references/column.md",
+                t,
+            ),
+            Check::new(
+                "column, springs E_j/L=1e11",
+                "max element sigma_zz error vs centroid value",
+                err_el,
+                0.0,
+                0.01,
+                "references/column.md",
+                t,
+            ),
+        ],
+    );
     assert!(err_u < 0.01, "top displacement off by {:.3} %", 100.0 * err_u);
     assert!(err_base < 0.01, "base stress off by {:.3} %", 100.0 * err_base);
     assert!(err_el < 0.01, "element stress off by {:.3} %", 100.0 * err_el);
@@ -115,8 +134,14 @@ fn column_with_merged_interfaces_is_exact_to_solver_tolerance() {
     assert_eq!(r.model.springs.len(), 0, "merged interfaces make no springs");
     let (uz, exact) = (top_uz(&r), uz_exact(H));
     let err = ((uz - exact) / exact).abs();
-    println!("merged: top u_z {uz:.6e} (exact {exact:.6e}, err {err:.2e}); element sigma_zz max err {:.2e}", element_stress_error(&r));
-    cdem::validation::record("column_merged", &[Check::new("column, merged", "top u_z (m)", uz, exact, 1e-5, "references/column.md", r.summary.wall_s)]);
+    println!(
+        "merged: top u_z {uz:.6e} (exact {exact:.6e}, err {err:.2e}); element sigma_zz max err {:.2e}",
+        element_stress_error(&r)
+    );
+    cdem::validation::record(
+        "column_merged",
+        &[Check::new("column, merged", "top u_z (m)", uz, exact, 1e-5, "references/column.md", r.summary.wall_s)],
+    );
     assert!(err < 1e-5, "top displacement off by {err:.2e}");
     assert!(element_stress_error(&r) < 1e-5);
 }

@@ -18,7 +18,10 @@ fn fingerprint(threads: usize) -> Vec<u64> {
     bits.push(s.min_szz.unwrap().to_bits());
     bits.push(s.unbalanced_ratio.to_bits());
     for h in &r.report.history {
-        bits.extend([h.kinetic_energy, h.external_work, h.strain_energy, h.unbalanced_ratio, h.max_displacement].map(f64::to_bits));
+        bits.extend(
+            [h.kinetic_energy, h.external_work, h.strain_energy, h.unbalanced_ratio, h.max_displacement]
+                .map(f64::to_bits),
+        );
     }
     bits.extend(r.state.u.iter().map(|v| v.to_bits()));
     bits

@@ -82,12 +82,19 @@ fn patch_test_uniform_strain_is_exact_in_one_perturbed_element() {
     let sig = [0, 1, 2].map(|i| [0, 1, 2].map(|j| lambda * tr * f64::from(u8::from(i == j)) + 2.0 * mu * eps[i][j]));
     let expected = [sig[0][0], sig[1][1], sig[2][2], sig[1][2], sig[0][2], sig[0][1]];
     let smax = expected.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    for (kind, base) in [(CellKind::Hex8, &UNIT_HEX[..]), (CellKind::Prism6, &UNIT_PRISM[..]), (CellKind::Tet4, &UNIT_HEX[..4])] {
-        let base: Vec<[f64; 3]> = if kind == CellKind::Tet4 { vec![[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.]] } else { base.to_vec() };
+    for (kind, base) in
+        [(CellKind::Hex8, &UNIT_HEX[..]), (CellKind::Prism6, &UNIT_PRISM[..]), (CellKind::Tet4, &UNIT_HEX[..4])]
+    {
+        let base: Vec<[f64; 3]> = if kind == CellKind::Tet4 {
+            vec![[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.]]
+        } else {
+            base.to_vec()
+        };
         let x = perturbed(&base, 1.0, 0.2, 11);
         let op = element_operators(kind, &x, &mat).unwrap();
         let nodes: Vec<u32> = (0..x.len() as u32).collect();
-        let u: Vec<f64> = x.iter().flat_map(|p| [0, 1, 2].map(|i| (0..3).map(|j| h[i][j] * p[j]).sum::<f64>())).collect();
+        let u: Vec<f64> =
+            x.iter().flat_map(|p| [0, 1, 2].map(|i| (0..3).map(|j| h[i][j] * p[j]).sum::<f64>())).collect();
         let s = element_stress(&op.grad, &nodes, &u, mat.lame);
         for c in 0..6 {
             assert!((s[c] - expected[c]).abs() < 1e-10 * smax, "{kind:?} stress[{c}] {} vs {}", s[c], expected[c]);
@@ -95,7 +102,9 @@ fn patch_test_uniform_strain_is_exact_in_one_perturbed_element() {
         let mut f = vec![0.0; u.len()];
         element_force(&op.k, &nodes, &u, &mut f); // one element: its slot is the global vector
         let energy = 0.5 * f.iter().zip(&u).map(|(a, b)| a * b).sum::<f64>();
-        let exact = 0.5 * op.volume * (0..3).flat_map(|i| (0..3).map(move |j| (i, j))).map(|(i, j)| eps[i][j] * sig[i][j]).sum::<f64>();
+        let exact = 0.5
+            * op.volume
+            * (0..3).flat_map(|i| (0..3).map(move |j| (i, j))).map(|(i, j)| eps[i][j] * sig[i][j]).sum::<f64>();
         assert!((energy - exact).abs() < 1e-10 * exact, "{kind:?} energy {energy} vs {exact}");
         let fmax = f.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         for d in 0..3 {

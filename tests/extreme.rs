@@ -57,7 +57,15 @@ fn run_case(case: &'static str, reference: f64, tolerance: f64, rows: &mut Vec<R
     let peak = ke.iter().cloned().fold(0.0, f64::max);
     assert!(ke.last().copied().unwrap_or(0.0) <= peak, "{case}: kinetic energy grew to the end");
     let ours = top_uz(&r);
-    rows.push(Row { case, ours, reference, tolerance, converged: r.summary.converged, steps: r.summary.steps, wall_s: r.summary.wall_s });
+    rows.push(Row {
+        case,
+        ours,
+        reference,
+        tolerance,
+        converged: r.summary.converged,
+        steps: r.summary.steps,
+        wall_s: r.summary.wall_s,
+    });
     r
 }
 
@@ -87,14 +95,35 @@ fn stiff_and_extreme_cases_are_stable_and_right_or_say_not_converged() {
     let mut failures = Vec::new();
     for r in &rows {
         let err = if r.reference == 0.0 { r.ours.abs() } else { ((r.ours - r.reference) / r.reference).abs() };
-        let _ = writeln!(md, "| {} | {:.6e} | {:.6e} | {:.2e} | {:.0e} | {} | {} | {:.2} |", r.case, r.ours, r.reference, err, r.tolerance, r.converged, r.steps, r.wall_s);
+        let _ = writeln!(
+            md,
+            "| {} | {:.6e} | {:.6e} | {:.2e} | {:.0e} | {} | {} | {:.2} |",
+            r.case, r.ours, r.reference, err, r.tolerance, r.converged, r.steps, r.wall_s
+        );
         // Converged runs must be right; a non-converged run must say so (it does, in its summary).
         if r.converged && err > r.tolerance {
             failures.push(format!("{}: error {err:.2e} > {:.0e}", r.case, r.tolerance));
         }
     }
     println!("{md}");
-    cdem::validation::record("extreme", &rows.iter().filter(|r| r.converged).map(|r| cdem::validation::Check::new(&format!("extreme: {}", r.case), "top u_z (m)", r.ours, r.reference, r.tolerance.max(1e-300), "references/extreme.md", r.wall_s)).collect::<Vec<_>>());
+    cdem::validation::record(
+        "extreme",
+        &rows
+            .iter()
+            .filter(|r| r.converged)
+            .map(|r| {
+                cdem::validation::Check::new(
+                    &format!("extreme: {}", r.case),
+                    "top u_z (m)",
+                    r.ours,
+                    r.reference,
+                    r.tolerance.max(1e-300),
+                    "references/extreme.md",
+                    r.wall_s,
+                )
+            })
+            .collect::<Vec<_>>(),
+    );
     let _ = std::fs::create_dir_all("target");
     let _ = std::fs::write("target/extreme-report.md", &md);
     assert!(failures.is_empty(), "{failures:?}");

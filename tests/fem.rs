@@ -126,7 +126,10 @@ fn check_patch(name: &str, mesh: &Mesh, scene: &Scene) {
             err_u = err_u.max((u[i] - ui).abs() / (2e-3 * 40.0));
         }
     }
-    println!("patch {name}: {} cells, {interior} free interior nodes, stress err {err_s:.1e}, displacement err {err_u:.1e}", sol.cells.len());
+    println!(
+        "patch {name}: {} cells, {interior} free interior nodes, stress err {err_s:.1e}, displacement err {err_u:.1e}",
+        sol.cells.len()
+    );
     assert!(err_s < 1e-9 && err_u < 1e-9, "{name}: uniform strain not reproduced (stress {err_s:e}, u {err_u:e})");
 }
 
@@ -217,7 +220,19 @@ fn element_stiffness_is_symmetric_with_exactly_six_rigid_body_modes() {
     let lame: Lame = YoungPoisson { young: E, poisson: NU }.into();
     let mut rng = SplitMix64::new(11);
     let cases: [(CellKind, Vec<[f64; 3]>); 3] = [
-        (CellKind::Hex8, vec![[0., 0., 0.], [2., 0., 0.], [2., 1., 0.], [0., 1., 0.], [0., 0., 3.], [2., 0., 3.], [2., 1., 3.], [0., 1., 3.]]),
+        (
+            CellKind::Hex8,
+            vec![
+                [0., 0., 0.],
+                [2., 0., 0.],
+                [2., 1., 0.],
+                [0., 1., 0.],
+                [0., 0., 3.],
+                [2., 0., 3.],
+                [2., 1., 3.],
+                [0., 1., 3.],
+            ],
+        ),
         (CellKind::Prism6, vec![[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.], [1., 0., 1.], [0., 1., 1.]]),
         (CellKind::Tet4, vec![[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.]]),
     ];
@@ -252,10 +267,20 @@ fn element_stiffness_is_symmetric_with_exactly_six_rigid_body_modes() {
 fn unit_cube_strain_energy_equals_the_continuum_value() {
     // u = eps x on one undistorted hexahedron: u^T K u / 2 = V eps : C : eps / 2.
     let lame: Lame = YoungPoisson { young: E, poisson: NU }.into();
-    let x = [[0., 0., 0.], [1., 0., 0.], [1., 1., 0.], [0., 1., 0.], [0., 0., 1.], [1., 0., 1.], [1., 1., 1.], [0., 1., 1.]];
+    let x = [
+        [0., 0., 0.],
+        [1., 0., 0.],
+        [1., 1., 0.],
+        [0., 1., 0.],
+        [0., 0., 1.],
+        [1., 0., 1.],
+        [1., 1., 1.],
+        [0., 1., 1.],
+    ];
     let eps = [[1e-3, 2e-4, 0.0], [2e-4, -5e-4, 3e-4], [0.0, 3e-4, 2e-3]];
     let em = element_matrices(CellKind::Hex8, &x, lame, [0.0; 3]).unwrap();
-    let u: Vec<f64> = x.iter().flat_map(|p| (0..3).map(move |i| (0..3).map(|j| eps[i][j] * p[j]).sum::<f64>())).collect();
+    let u: Vec<f64> =
+        x.iter().flat_map(|p| (0..3).map(move |i| (0..3).map(|j| eps[i][j] * p[j]).sum::<f64>())).collect();
     let energy = 0.5 * (0..24).map(|a| u[a] * (0..24).map(|b| em.k[a * 24 + b] * u[b]).sum::<f64>()).sum::<f64>();
     let tr = eps[0][0] + eps[1][1] + eps[2][2];
     let eps2: f64 = eps.iter().flatten().map(|v| v * v).sum();
@@ -302,7 +327,8 @@ fn refine_slab(mesh: &Mesh) -> Mesh {
         .groups
         .iter()
         .map(|g| {
-            let mut g2 = PhysicalGroup { dim: g.dim, tag: g.tag, name: g.name.clone(), cells: Vec::new(), facets: Vec::new() };
+            let mut g2 =
+                PhysicalGroup { dim: g.dim, tag: g.tag, name: g.name.clone(), cells: Vec::new(), facets: Vec::new() };
             if g.dim == 3 {
                 g2.cells = g.cells.iter().flat_map(|&c| 4 * c..4 * c + 4).collect();
             } else {
@@ -399,9 +425,24 @@ fn outputs_have_the_keys_of_cdem_run() {
     let sol = solve_scene(&column()).unwrap();
     let dir = std::env::temp_dir().join(format!("cdem-fem-test-{}", std::process::id()));
     cdem::fem::write_outputs(&sol, &dir).unwrap();
-    let summary: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
     let keys: Vec<&str> = summary.as_object().unwrap().keys().map(|k| k.as_str()).collect();
-    for k in ["converged", "steps", "wall_s", "dt", "unbalanced_ratio", "max_abs_uz", "min_uz", "max_abs_u", "min_szz", "failed_springs", "elements", "nodes", "springs"] {
+    for k in [
+        "converged",
+        "steps",
+        "wall_s",
+        "dt",
+        "unbalanced_ratio",
+        "max_abs_uz",
+        "min_uz",
+        "max_abs_u",
+        "min_szz",
+        "failed_springs",
+        "elements",
+        "nodes",
+        "springs",
+    ] {
         assert!(keys.contains(&k), "summary.json lacks {k}");
     }
     let vtu = std::fs::read_to_string(dir.join("final.vtu")).unwrap();
@@ -440,7 +481,15 @@ fn fem_agrees_with_scikit_fem_on_the_unperturbed_column_and_slope() {
         for (key, v) in ours {
             let r = num(&case[key]);
             if key == "max_abs_uz" || key == "min_element_szz" {
-                checks.push(cdem::validation::Check::new(&format!("FEM vs scikit-fem, {name}"), key, v, r, 1e-9, "references/skfem.md", sol.summary.wall_s));
+                checks.push(cdem::validation::Check::new(
+                    &format!("FEM vs scikit-fem, {name}"),
+                    key,
+                    v,
+                    r,
+                    1e-9,
+                    "references/skfem.md",
+                    sol.summary.wall_s,
+                ));
             }
             println!("{name} {key}: cdem fem {v:.12e}, scikit-fem {r:.12e}, rel {:.1e}", rel(v, r));
             worst = worst.max(rel(v, r));

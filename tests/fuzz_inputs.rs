@@ -30,7 +30,21 @@ const MSH_SEEDS: &[&str] = &[
 
 const SCENE_SEEDS: &[&str] = &["verification/cases/column/column.toml", "verification/cases/column/column-merged.toml"];
 
-const TOKENS: &[&str] = &["0", "-1", "1e308", "-1e308", "nan", "inf", "4294967296", "18446744073709551616", "-0", "1e-320", "\"x\"", "[]", "{}"];
+const TOKENS: &[&str] = &[
+    "0",
+    "-1",
+    "1e308",
+    "-1e308",
+    "nan",
+    "inf",
+    "4294967296",
+    "18446744073709551616",
+    "-0",
+    "1e-320",
+    "\"x\"",
+    "[]",
+    "{}",
+];
 
 fn mutate_bytes(rng: &mut SplitMix64, input: &[u8]) -> Vec<u8> {
     let mut v = input.to_vec();

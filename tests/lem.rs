@@ -4,7 +4,10 @@
 
 use std::path::Path;
 
-use cdem::lem::{analyse, evaluate_circle, slices_of, Circle, LemInput, LemResult, LemSection, LowerBound, Material, Method, Mode, Zone};
+use cdem::lem::{
+    analyse, evaluate_circle, slices_of, Circle, LemInput, LemResult, LemSection, LowerBound, Material, Method, Mode,
+    Zone,
+};
 
 // ACADS (1989) problem 1(a); Rocscience Slide verification manual, problem 1.
 const ACADS_REFEREE: f64 = 1.00;
@@ -32,7 +35,14 @@ fn both_bands(a: f64, b: f64) -> (f64, f64) {
 
 fn acads_section(c: f64, phi: f64) -> LemSection {
     let ground = vec![[20.0, 25.0], [30.0, 25.0], [50.0, 35.0], [70.0, 35.0]];
-    LemSection::new(ground, LowerBound::Level(20.0), Some(Material { cohesion: c, friction_angle: phi, unit_weight: 20e3 }), vec![], None).unwrap()
+    LemSection::new(
+        ground,
+        LowerBound::Level(20.0),
+        Some(Material { cohesion: c, friction_angle: phi, unit_weight: 20e3 }),
+        vec![],
+        None,
+    )
+    .unwrap()
 }
 
 #[test]
@@ -59,13 +69,52 @@ fn acads_1a_spencer_agrees_with_slide_and_is_reported_against_the_referee() {
     let c = critical(&r, Method::Spencer);
     let b = critical(&r, Method::Bishop);
     println!("ACADS 1(a) Spencer {:.5}: Slide {ACADS_SLIDE_SPENCER}, referee {ACADS_REFEREE}", c.fs);
-    cdem::validation::record("lem_acads", &[
-        cdem::validation::Check::new("ACADS 1(a)", "Bishop FS vs Slide", b.fs, ACADS_SLIDE_BISHOP, 0.015, "references/lem.md", r.wall_s),
-        cdem::validation::Check::new("ACADS 1(a)", "Bishop FS vs referee", b.fs, ACADS_REFEREE, 0.015, "references/lem.md", r.wall_s),
-        cdem::validation::Check::new("ACADS 1(a)", "Spencer FS vs Slide", c.fs, ACADS_SLIDE_SPENCER, 0.015, "references/lem.md", r.wall_s),
-        cdem::validation::Check::new("ACADS 1(a)", "Spencer FS vs referee (1.6 % low, see lem.md)", c.fs, ACADS_REFEREE, f64::NAN, "references/lem.md", r.wall_s),
-    ]);
-    assert!((c.fs - ACADS_SLIDE_SPENCER).abs() <= 0.015 * ACADS_SLIDE_SPENCER, "Spencer FS {} vs Slide {ACADS_SLIDE_SPENCER}", c.fs);
+    cdem::validation::record(
+        "lem_acads",
+        &[
+            cdem::validation::Check::new(
+                "ACADS 1(a)",
+                "Bishop FS vs Slide",
+                b.fs,
+                ACADS_SLIDE_BISHOP,
+                0.015,
+                "references/lem.md",
+                r.wall_s,
+            ),
+            cdem::validation::Check::new(
+                "ACADS 1(a)",
+                "Bishop FS vs referee",
+                b.fs,
+                ACADS_REFEREE,
+                0.015,
+                "references/lem.md",
+                r.wall_s,
+            ),
+            cdem::validation::Check::new(
+                "ACADS 1(a)",
+                "Spencer FS vs Slide",
+                c.fs,
+                ACADS_SLIDE_SPENCER,
+                0.015,
+                "references/lem.md",
+                r.wall_s,
+            ),
+            cdem::validation::Check::new(
+                "ACADS 1(a)",
+                "Spencer FS vs referee (1.6 % low, see lem.md)",
+                c.fs,
+                ACADS_REFEREE,
+                f64::NAN,
+                "references/lem.md",
+                r.wall_s,
+            ),
+        ],
+    );
+    assert!(
+        (c.fs - ACADS_SLIDE_SPENCER).abs() <= 0.015 * ACADS_SLIDE_SPENCER,
+        "Spencer FS {} vs Slide {ACADS_SLIDE_SPENCER}",
+        c.fs
+    );
 }
 
 #[test]
@@ -74,7 +123,10 @@ fn acads_1a_method_ordering_is_textbook() {
     // and Spencer agree within 1 % on circles.
     let r = analyse(&load("verification/lem/acads-1a.toml")).unwrap();
     let (o, b, s) = (r.fs.ordinary.unwrap(), r.fs.bishop.unwrap(), r.fs.spencer.unwrap());
-    println!("ACADS 1(a): ordinary {o:.4}, Bishop {b:.4}, Spencer {s:.4}; theta {:?} deg", critical(&r, Method::Spencer).theta_deg);
+    println!(
+        "ACADS 1(a): ordinary {o:.4}, Bishop {b:.4}, Spencer {s:.4}; theta {:?} deg",
+        critical(&r, Method::Spencer).theta_deg
+    );
     assert!(o < b);
     assert!((s - b).abs() < 0.01 * b);
 }
@@ -84,7 +136,18 @@ fn paper_slope_bishop_matches_the_papers_lem() {
     let r = analyse(&load("verification/lem/paper-slope.toml")).unwrap();
     let c = critical(&r, Method::Bishop);
     println!("paper slope Bishop {:.4} (paper 1.084), circle ({:.3}, {:.3}, {:.3})", c.fs, c.xc, c.zc, c.r);
-    cdem::validation::record("lem_paper_slope", &[cdem::validation::Check::new("paper slope LEM", "Bishop FS (tolerance: 0.01 absolute)", c.fs, PAPER_LEM_FS, 0.01 / PAPER_LEM_FS, "references/paper.md", r.wall_s)]);
+    cdem::validation::record(
+        "lem_paper_slope",
+        &[cdem::validation::Check::new(
+            "paper slope LEM",
+            "Bishop FS (tolerance: 0.01 absolute)",
+            c.fs,
+            PAPER_LEM_FS,
+            0.01 / PAPER_LEM_FS,
+            "references/paper.md",
+            r.wall_s,
+        )],
+    );
     assert!((c.fs - PAPER_LEM_FS).abs() <= 0.01, "Bishop FS {}", c.fs);
     for m in Method::ALL {
         let c = critical(&r, m);
@@ -110,7 +173,14 @@ fn section_from_the_mesh_equals_the_explicit_section() {
 fn segment_case() -> (LemSection, Circle, f64) {
     let (s, zc, r, c, gamma) = (0.5f64, 12.0f64, 20.0f64, 20e3, 18e3);
     let ground = vec![[-100.0, -100.0 * s], [100.0, 100.0 * s]];
-    let section = LemSection::new(ground, LowerBound::Level(-1e3), Some(Material { cohesion: c, friction_angle: 0.0, unit_weight: gamma }), vec![], None).unwrap();
+    let section = LemSection::new(
+        ground,
+        LowerBound::Level(-1e3),
+        Some(Material { cohesion: c, friction_angle: 0.0, unit_weight: gamma }),
+        vec![],
+        None,
+    )
+    .unwrap();
     let k = (1.0 + s * s).sqrt();
     let t = (zc / k / r).acos();
     let area = r * r * (t - t.sin() * t.cos());
@@ -185,7 +255,11 @@ fn spencer_moment_equation_at_zero_inclination_is_bishop() {
     // both equations; Bishop satisfies the moment one at theta = 0. Check the
     // Spencer theta and FS are finite and close to Bishop on several circles.
     let section = acads_section(3e3, 19.6);
-    for circle in [Circle { xc: 35.0, zc: 50.0, r: 27.0 }, Circle { xc: 32.0, zc: 54.0, r: 28.5 }, Circle { xc: 40.0, zc: 45.0, r: 18.0 }] {
+    for circle in [
+        Circle { xc: 35.0, zc: 50.0, r: 27.0 },
+        Circle { xc: 32.0, zc: 54.0, r: 28.5 },
+        Circle { xc: 40.0, zc: 45.0, r: 18.0 },
+    ] {
         let fs = evaluate_circle(&section, circle, 50).unwrap();
         let (b, s) = (fs.bishop.unwrap(), fs.spencer.unwrap());
         assert!((b - s).abs() < 0.02 * b, "Bishop {b}, Spencer {s}");
@@ -218,7 +292,10 @@ fn search_is_deterministic_and_independent_of_threads() {
 fn mirrored_section_gives_the_mirrored_answer() {
     let text = std::fs::read_to_string("verification/lem/acads-1a.toml").unwrap();
     let mirrored = text
-        .replace("ground = [[20.0, 25.0], [30.0, 25.0], [50.0, 35.0], [70.0, 35.0]]", "ground = [[20.0, 35.0], [40.0, 35.0], [60.0, 25.0], [70.0, 25.0]]")
+        .replace(
+            "ground = [[20.0, 25.0], [30.0, 25.0], [50.0, 35.0], [70.0, 35.0]]",
+            "ground = [[20.0, 35.0], [40.0, 35.0], [60.0, 25.0], [70.0, 25.0]]",
+        )
         .replace("facing = \"left\"", "facing = \"right\"");
     assert_ne!(text, mirrored);
     let a = analyse(&load("verification/lem/acads-1a.toml")).unwrap();
@@ -234,7 +311,14 @@ fn mirrored_section_gives_the_mirrored_answer() {
 #[test]
 fn lower_bound_as_polyline_equals_the_level() {
     let level = acads_section(3e3, 19.6);
-    let poly = LemSection::new(level.ground().to_vec(), LowerBound::Polyline(vec![[0.0, 20.0], [100.0, 20.0]]), level.background().copied(), vec![], None).unwrap();
+    let poly = LemSection::new(
+        level.ground().to_vec(),
+        LowerBound::Polyline(vec![[0.0, 20.0], [100.0, 20.0]]),
+        level.background().copied(),
+        vec![],
+        None,
+    )
+    .unwrap();
     // A circle dipping below z = 20 is rejected by both; one above by neither.
     for circle in [Circle { xc: 40.0, zc: 45.0, r: 26.0 }, Circle { xc: 40.0, zc: 45.0, r: 24.0 }] {
         assert_eq!(evaluate_circle(&level, circle, 50).is_ok(), evaluate_circle(&poly, circle, 50).is_ok());
@@ -249,7 +333,10 @@ fn zones_of_one_material_match_the_homogeneous_section() {
     let upper = Zone { polygon: vec![[0.0, 30.0], [100.0, 30.0], [100.0, 50.0], [0.0, 50.0]], material: m };
     let zoned = LemSection::new(ground, LowerBound::Level(20.0), Some(m), vec![upper], None).unwrap();
     let circle = Circle { xc: 29.6, zc: 53.4, r: 28.4 };
-    let (a, b) = (evaluate_circle(&acads_section(3e3, 19.6), circle, 200).unwrap(), evaluate_circle(&zoned, circle, 200).unwrap());
+    let (a, b) = (
+        evaluate_circle(&acads_section(3e3, 19.6), circle, 200).unwrap(),
+        evaluate_circle(&zoned, circle, 200).unwrap(),
+    );
     for m in Method::ALL {
         let (x, y) = (a.get(m).unwrap(), b.get(m).unwrap());
         assert!((x - y).abs() < 1e-4 * x, "{m:?}: {x} vs {y}");

@@ -50,11 +50,35 @@ fn headline_figures_for_the_report() {
             src,
             h.step_block.step_s,
         ),
-        Check::new("performance: paper slope step", "bandwidth / stream triad (goal 0.5)", h.step_fraction_of_stream(), 0.5, f64::NAN, src, h.step_block.step_s),
-        Check::new("performance: paper slope", "DR to 1e-5 / FEM solve time (goal 3)", h.dr_over_fem(), 3.0, f64::NAN, src, h.dr_block.seconds),
+        Check::new(
+            "performance: paper slope step",
+            "bandwidth / stream triad (goal 0.5)",
+            h.step_fraction_of_stream(),
+            0.5,
+            f64::NAN,
+            src,
+            h.step_block.step_s,
+        ),
+        Check::new(
+            "performance: paper slope",
+            "DR to 1e-5 / FEM solve time (goal 3)",
+            h.dr_over_fem(),
+            3.0,
+            f64::NAN,
+            src,
+            h.dr_block.seconds,
+        ),
     ];
     for (case, ours, pyslope) in &h.lem {
-        rows.push(Check::new(&format!("performance: LEM grid, {case}"), "pySlope / ours time (goal 100)", pyslope / ours, 100.0, f64::NAN, src, *ours));
+        rows.push(Check::new(
+            &format!("performance: LEM grid, {case}"),
+            "pySlope / ours time (goal 100)",
+            pyslope / ours,
+            100.0,
+            f64::NAN,
+            src,
+            *ours,
+        ));
     }
     record("performance", &rows);
 }

@@ -80,7 +80,12 @@ fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
         let f_n = sp.kn[s] * dn;
         let f_s = (0..3).map(|i| (sp.ks[s] * (d[i] - dn * n[i])).powi(2)).sum::<f64>().sqrt();
         let violated = f_n >= t_strength * sp.area[s] || f_s > (-f_n).max(0.0) * tan_phi + c * sp.area[s];
-        assert_eq!(r.failed_at[s] == Some(first_step), violated, "spring {s}: failed at {:?}, eq. 17-18 violated {violated}", r.failed_at[s]);
+        assert_eq!(
+            r.failed_at[s] == Some(first_step),
+            violated,
+            "spring {s}: failed at {:?}, eq. 17-18 violated {violated}",
+            r.failed_at[s]
+        );
     }
     // And they are where K_i (circle frame, eq. 22) is lowest.
     let per_spring = spring_points(&r.model, &elastic, "slip", &CIRCLE).unwrap();
@@ -88,11 +93,21 @@ fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
     let (mut first_k, mut later_k) = (Vec::new(), Vec::new());
     for (s, p) in &per_spring {
         if ki(p) > 0.0 {
-            if r.failed_at[*s] == Some(first_step) { first_k.push(ki(p)) } else { later_k.push(ki(p)) }
+            if r.failed_at[*s] == Some(first_step) {
+                first_k.push(ki(p))
+            } else {
+                later_k.push(ki(p))
+            }
         }
     }
     let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
-    println!("{} springs fail at step {first_step}: mean K_i {:.3} (max {:.3}); the others mean K_i {:.3}", first_k.len(), mean(&first_k), first_k.iter().cloned().fold(0.0, f64::max), mean(&later_k));
+    println!(
+        "{} springs fail at step {first_step}: mean K_i {:.3} (max {:.3}); the others mean K_i {:.3}",
+        first_k.len(),
+        mean(&first_k),
+        first_k.iter().cloned().fold(0.0, f64::max),
+        mean(&later_k)
+    );
     assert!(mean(&first_k) < 1.0 && mean(&first_k) < mean(&later_k), "the first failures are where K_i is lowest");
     assert_eq!(r.end, EndState::GlobalSliding, "the mass slides once the cohesion is lost");
 
@@ -127,7 +142,14 @@ fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
         for (comp, name) in [(0, "u_x"), (2, "u_z")] {
             let p: Vec<Patch> = front_patches(&r.model, |e| element_mean_displacement(&r.model, &du, e, comp));
             let title = format!("Phase 2, step {}: {name} since phase 1", r.stages[idx].step);
-            section_contour(Path::new(&format!("target/figures/fig10-{tag}-{name}.png")), &title, &format!("{name} (m)"), &p, &[]).unwrap();
+            section_contour(
+                Path::new(&format!("target/figures/fig10-{tag}-{name}.png")),
+                &title,
+                &format!("{name} (m)"),
+                &p,
+                &[],
+            )
+            .unwrap();
         }
     }
 }

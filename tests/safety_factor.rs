@@ -35,7 +35,8 @@ fn infinite_slope_factor_matches_the_textbook_formula() {
     let (sig_n, tau) = traction_from_stress(sigma, n, t);
     assert!((sig_n - gamma * d * beta.cos().powi(2)).abs() < 1e-9 * gamma * d);
     assert!((tau - gamma * d * beta.sin() * beta.cos()).abs() < 1e-9 * gamma * d);
-    let pts: Vec<SurfacePoint> = (0..10).map(|i| SurfacePoint { s: i as f64, area: 1.0 + i as f64, sigma_n: sig_n, tau }).collect();
+    let pts: Vec<SurfacePoint> =
+        (0..10).map(|i| SurfacePoint { s: i as f64, area: 1.0 + i as f64, sigma_n: sig_n, tau }).collect();
     let f = safety_factors(&pts, c, phi.tan());
     let textbook = c / (gamma * d * beta.sin() * beta.cos()) + phi.tan() / beta.tan();
     assert!((f.k - textbook).abs() < 1e-12 * textbook, "{} vs {textbook}", f.k);

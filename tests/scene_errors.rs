@@ -47,8 +47,14 @@ fn unknown_keys_are_rejected_with_their_name() {
 #[test]
 fn bad_values_name_their_key() {
     assert_eq!(invalid_key(&GOOD.replace("poisson_ratio = 0.3", "poisson_ratio = 0.5")), "material[0].poisson_ratio");
-    assert_eq!(invalid_key(&GOOD.replace("youngs_modulus = 3.0e8", "youngs_modulus = -1.0")), "material[0].youngs_modulus");
-    assert_eq!(invalid_key(&GOOD.replace("youngs_modulus = 3.0e8", "youngs_modulus = nan")), "material[0].youngs_modulus");
+    assert_eq!(
+        invalid_key(&GOOD.replace("youngs_modulus = 3.0e8", "youngs_modulus = -1.0")),
+        "material[0].youngs_modulus"
+    );
+    assert_eq!(
+        invalid_key(&GOOD.replace("youngs_modulus = 3.0e8", "youngs_modulus = nan")),
+        "material[0].youngs_modulus"
+    );
     assert_eq!(invalid_key(&GOOD.replace("density = 2100.0", "density = 0.0")), "material[0].density");
     assert_eq!(invalid_key(&GOOD.replace("mode = \"merged\"", "mode = \"springs\"")), "joints.normal_modulus");
     assert_eq!(invalid_key(&format!("{GOOD}\n[perturbation]\nratio = 0.7\n")), "perturbation.ratio");
@@ -64,8 +70,14 @@ fn joint_strengths_are_checked_and_named() {
         "mode = \"springs\"\nnormal_modulus = 1e10\nshear_modulus = 4e9\nthickness = 1.0\nstrength = { tensile = 0.0, cohesion = 16e3, friction_angle = 18.0 }",
     );
     parse(&springs).unwrap();
-    assert_eq!(invalid_key(&springs.replace("friction_angle = 18.0", "friction_angle = 90.0")), "joints.strength.friction_angle");
-    assert_eq!(invalid_key(&springs.replace("friction_angle = 18.0", "friction_angle = -1.0")), "joints.strength.friction_angle");
+    assert_eq!(
+        invalid_key(&springs.replace("friction_angle = 18.0", "friction_angle = 90.0")),
+        "joints.strength.friction_angle"
+    );
+    assert_eq!(
+        invalid_key(&springs.replace("friction_angle = 18.0", "friction_angle = -1.0")),
+        "joints.strength.friction_angle"
+    );
     assert_eq!(invalid_key(&springs.replace("cohesion = 16e3", "cohesion = -1.0")), "joints.strength.cohesion");
     assert_eq!(invalid_key(&springs.replace("tensile = 0.0", "tensile = nan")), "joints.strength.tensile");
     let iface = format!("{springs}\n[[interface]]\ngroup = \"top\"\nstrength = {{ tensile = 0.0, cohesion = -5.0, friction_angle = 30.0 }}\n");

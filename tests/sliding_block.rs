@@ -35,7 +35,9 @@ fn slide(theta_deg: f64, t_end: f64) -> (f64, f64) {
     dynamic.set_failure(&model, true);
     state.v.fill(0.0);
     let u0 = state.u.clone();
-    let block: Vec<usize> = (0..model.n_nodes()).filter(|&i| model.x0[i][2] > 1.0 + 1e-9 || (model.x0[i][2] > 1.0 - 1e-9 && is_block_copy(&model, i))).collect();
+    let block: Vec<usize> = (0..model.n_nodes())
+        .filter(|&i| model.x0[i][2] > 1.0 + 1e-9 || (model.x0[i][2] > 1.0 - 1e-9 && is_block_copy(&model, i)))
+        .collect();
     let steps = (t_end / dynamic.dt).round() as usize;
     for _ in 0..steps {
         dynamic.step(&model, &mut state).unwrap();
@@ -70,6 +72,17 @@ fn block_above_the_friction_angle_slides_with_the_coulomb_acceleration() {
     let (x, t) = slide(30.0, 0.5);
     let a = 2.0 * x / (t * t);
     println!("theta 30 deg, phi 20 deg: a = {a:.4} m/s^2 (analytic {analytic:.4})");
-    cdem::validation::record("sliding_block", &[cdem::validation::Check::new("block on plane, theta 30, phi 20", "acceleration (m/s^2)", a, analytic, 0.02, "references/sliding-block.md", 0.0)]);
+    cdem::validation::record(
+        "sliding_block",
+        &[cdem::validation::Check::new(
+            "block on plane, theta 30, phi 20",
+            "acceleration (m/s^2)",
+            a,
+            analytic,
+            0.02,
+            "references/sliding-block.md",
+            0.0,
+        )],
+    );
     assert!(((a - analytic) / analytic).abs() < 0.02, "a = {a}, analytic {analytic}");
 }

@@ -12,8 +12,8 @@ use std::path::Path;
 
 use cdem::analysis::slip::{from_springs, from_stresses, SlipCircle};
 use cdem::analysis::{safety_factors, sign_segments, Segment, SurfacePoint};
-use cdem::lem::{evaluate_circle, LemInput};
 use cdem::lem::Circle;
+use cdem::lem::{evaluate_circle, LemInput};
 use cdem::output::figures::{line_plot, section_contour, Scale, Series};
 use cdem::output::section::element_mean_displacement;
 use cdem::scene::Scene;
@@ -52,7 +52,8 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
     let tan_phi = PHI_DEG.to_radians().tan();
 
     let springs = from_springs(&run.model, &run.state, "slip", &circle).unwrap();
-    let cdem_stress = from_stresses(&mesh, &run.model.mesh_coords, "slip", &circle, run.stress.as_ref().unwrap()).unwrap();
+    let cdem_stress =
+        from_stresses(&mesh, &run.model.mesh_coords, "slip", &circle, run.stress.as_ref().unwrap()).unwrap();
     let fem_stress = from_stresses(&mesh, &fem.coords, "slip", &circle, &fem.stress).unwrap();
     let k_springs = safety_factors(&springs, C, tan_phi);
     let k_cdem = safety_factors(&cdem_stress, C, tan_phi);
@@ -64,12 +65,47 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
     println!("eq. 21 FEM stresses: {:.4} ({:+.2} %)", k_fem.k, 100.0 * rel(k_fem.k));
 
     let t = run.summary.wall_s;
-    cdem::validation::record("slip_surface", &[
-        Check::new("paper slope, slip circle", "eq. 21 K from CDEM springs vs LEM Bishop", k_springs.k, fs_lem, 0.02, "references/lem.md", t),
-        Check::new("paper slope, slip circle", "eq. 21 K from CDEM stresses vs FEM stresses", k_cdem.k, k_fem.k, 0.005, "cdem fem", t),
-        Check::new("paper slope, slip circle", "eq. 21 K from FEM stresses vs LEM Bishop", k_fem.k, fs_lem, f64::NAN, "references/lem.md", t),
-        Check::new("paper slope, slip circle", "LEM Bishop vs paper LEM", fs_lem, 1.084, f64::NAN, "references/paper.md", t),
-    ]);
+    cdem::validation::record(
+        "slip_surface",
+        &[
+            Check::new(
+                "paper slope, slip circle",
+                "eq. 21 K from CDEM springs vs LEM Bishop",
+                k_springs.k,
+                fs_lem,
+                0.02,
+                "references/lem.md",
+                t,
+            ),
+            Check::new(
+                "paper slope, slip circle",
+                "eq. 21 K from CDEM stresses vs FEM stresses",
+                k_cdem.k,
+                k_fem.k,
+                0.005,
+                "cdem fem",
+                t,
+            ),
+            Check::new(
+                "paper slope, slip circle",
+                "eq. 21 K from FEM stresses vs LEM Bishop",
+                k_fem.k,
+                fs_lem,
+                f64::NAN,
+                "references/lem.md",
+                t,
+            ),
+            Check::new(
+                "paper slope, slip circle",
+                "LEM Bishop vs paper LEM",
+                fs_lem,
+                1.084,
+                f64::NAN,
+                "references/paper.md",
+                t,
+            ),
+        ],
+    );
     // The paper's comparison: eq. 21 from the CDEM spring forces on the
     // conforming interface against the LEM on the same surface.
     assert!(rel(k_springs.k).abs() < 0.02, "eq. 21 (springs) {:.4} vs LEM {fs_lem:.4}", k_springs.k);
@@ -80,23 +116,52 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
     let seg_cdem = segments(&cdem_stress, &k_cdem.k_i);
     let seg_fem = segments(&fem_stress, &k_fem.k_i);
     let signs = |s: &[Segment]| s.iter().map(|g| g.sign).collect::<Vec<_>>();
-    println!("segments CDEM springs {:?}, CDEM stress {:?}, FEM {:?}", describe(&seg_springs), describe(&seg_cdem), describe(&seg_fem));
+    println!(
+        "segments CDEM springs {:?}, CDEM stress {:?}, FEM {:?}",
+        describe(&seg_springs),
+        describe(&seg_cdem),
+        describe(&seg_fem)
+    );
     assert_eq!(signs(&seg_cdem), signs(&seg_fem), "CDEM and FEM give the same sign segments");
     assert_eq!(signs(&seg_springs), signs(&seg_fem), "spring- and stress-based segments agree");
     insta::assert_yaml_snapshot!("ki_segments_cdem_springs", describe(&seg_springs));
 
     // Fig. 9: the surface on the section, and K_i from toe to crest.
     std::fs::create_dir_all("target/figures").unwrap();
-    let patches = cdem::output::section::front_patches(&run.model, |e| element_mean_displacement(&run.model, &run.state.u, e, 2));
-    let arc: Vec<(f64, f64)> = (0..=100).map(|k| {
-        let a0 = (TOE[1] - ZC).atan2(TOE[0] - XC);
-        let a1 = (40.0 - ZC).atan2((r * r - (40.0 - ZC).powi(2)).sqrt());
-        let a = a0 + (a1 - a0) * k as f64 / 100.0;
-        (XC + r * a.cos(), ZC + r * a.sin())
-    }).collect();
-    section_contour(Path::new("target/figures/fig9-surface.png"), "Slip surface (LEM critical circle) on u_z", "u_z (m)", &patches, &[arc]).unwrap();
-    let clamp = |p: &[SurfacePoint], k: &[f64]| p.iter().zip(k).map(|(q, &v)| (q.s, v.clamp(-5.0, 5.0))).collect::<Vec<_>>();
+    let patches =
+        cdem::output::section::front_patches(&run.model, |e| element_mean_displacement(&run.model, &run.state.u, e, 2));
+    let arc: Vec<(f64, f64)> = (0..=100)
+        .map(|k| {
+            let a0 = (TOE[1] - ZC).atan2(TOE[0] - XC);
+            let a1 = (40.0 - ZC).atan2((r * r - (40.0 - ZC).powi(2)).sqrt());
+            let a = a0 + (a1 - a0) * k as f64 / 100.0;
+            (XC + r * a.cos(), ZC + r * a.sin())
+        })
+        .collect();
+    section_contour(
+        Path::new("target/figures/fig9-surface.png"),
+        "Slip surface (LEM critical circle) on u_z",
+        "u_z (m)",
+        &patches,
+        &[arc],
+    )
+    .unwrap();
+    let clamp =
+        |p: &[SurfacePoint], k: &[f64]| p.iter().zip(k).map(|(q, &v)| (q.s, v.clamp(-5.0, 5.0))).collect::<Vec<_>>();
     let (a, b, c) = (clamp(&springs, &k_springs.k_i), clamp(&cdem_stress, &k_cdem.k_i), clamp(&fem_stress, &k_fem.k_i));
-    let series = [Series { name: "CDEM springs", points: &a }, Series { name: "CDEM stresses", points: &b }, Series { name: "FEM stresses", points: &c }];
-    line_plot(Path::new("target/figures/fig9-ki.png"), "K_i along the slip surface, toe (s = 0) to crest (clamped to +-5)", "s (m)", "K_i", &series, Scale::Linear, Scale::Linear).unwrap();
+    let series = [
+        Series { name: "CDEM springs", points: &a },
+        Series { name: "CDEM stresses", points: &b },
+        Series { name: "FEM stresses", points: &c },
+    ];
+    line_plot(
+        Path::new("target/figures/fig9-ki.png"),
+        "K_i along the slip surface, toe (s = 0) to crest (clamped to +-5)",
+        "s (m)",
+        "K_i",
+        &series,
+        Scale::Linear,
+        Scale::Linear,
+    )
+    .unwrap();
 }

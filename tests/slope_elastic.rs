@@ -24,17 +24,68 @@ fn paper_slope_cdem_matches_fem_on_the_same_mesh() {
     let (cs, fs) = (c.min_szz.unwrap(), f.min_szz.unwrap());
     let err_s = ((cs - fs) / fs).abs();
     println!("slope CDEM: {} steps, {:.1} s; FEM {:.2} s", c.steps, c.wall_s, f.wall_s);
-    println!("max |u_z|: CDEM {:.4e} m, FEM {:.4e} m (diff {:.2} %); paper 4.18e-2 / ANSYS 4.16e-2", c.max_abs_uz, f.max_abs_uz, 100.0 * err_u);
-    println!("min sigma_zz: CDEM {cs:.4e} Pa, FEM {fs:.4e} Pa (diff {:.2} %); paper -7.89e5 / ANSYS -7.81e5", 100.0 * err_s);
+    println!(
+        "max |u_z|: CDEM {:.4e} m, FEM {:.4e} m (diff {:.2} %); paper 4.18e-2 / ANSYS 4.16e-2",
+        c.max_abs_uz,
+        f.max_abs_uz,
+        100.0 * err_u
+    );
+    println!(
+        "min sigma_zz: CDEM {cs:.4e} Pa, FEM {fs:.4e} Pa (diff {:.2} %); paper -7.89e5 / ANSYS -7.81e5",
+        100.0 * err_s
+    );
     println!("relative L2 error of the displacement field: {:.3} %", 100.0 * l2);
     let t = c.wall_s;
-    cdem::validation::record("slope_elastic", &[
-        Check::new("paper slope, CDEM vs FEM", "max |u_z| (m)", c.max_abs_uz, f.max_abs_uz, 0.01, "cdem fem (references/skfem.md)", t),
-        Check::new("paper slope, CDEM vs FEM", "min sigma_zz (Pa)", cs, fs, 0.01, "cdem fem (references/skfem.md)", t),
-        Check::new("paper slope, CDEM vs FEM", "relative L2 error of u", l2, 0.0, 0.01, "cdem fem (references/skfem.md)", t),
-        Check::new("paper slope, CDEM vs paper", "max |u_z| (m)", c.max_abs_uz, 4.18e-2, f64::NAN, "references/paper.md", t),
-        Check::new("paper slope, CDEM vs paper", "min sigma_zz (Pa)", cs, -7.89e5, f64::NAN, "references/paper.md", t),
-    ]);
+    cdem::validation::record(
+        "slope_elastic",
+        &[
+            Check::new(
+                "paper slope, CDEM vs FEM",
+                "max |u_z| (m)",
+                c.max_abs_uz,
+                f.max_abs_uz,
+                0.01,
+                "cdem fem (references/skfem.md)",
+                t,
+            ),
+            Check::new(
+                "paper slope, CDEM vs FEM",
+                "min sigma_zz (Pa)",
+                cs,
+                fs,
+                0.01,
+                "cdem fem (references/skfem.md)",
+                t,
+            ),
+            Check::new(
+                "paper slope, CDEM vs FEM",
+                "relative L2 error of u",
+                l2,
+                0.0,
+                0.01,
+                "cdem fem (references/skfem.md)",
+                t,
+            ),
+            Check::new(
+                "paper slope, CDEM vs paper",
+                "max |u_z| (m)",
+                c.max_abs_uz,
+                4.18e-2,
+                f64::NAN,
+                "references/paper.md",
+                t,
+            ),
+            Check::new(
+                "paper slope, CDEM vs paper",
+                "min sigma_zz (Pa)",
+                cs,
+                -7.89e5,
+                f64::NAN,
+                "references/paper.md",
+                t,
+            ),
+        ],
+    );
     assert!(err_u < 0.01, "max |u_z| differs by {:.2} %", 100.0 * err_u);
     assert!(err_s < 0.01, "min sigma_zz differs by {:.2} %", 100.0 * err_s);
     assert!(l2 < 0.01, "relative L2 displacement error {:.2} %", 100.0 * l2);

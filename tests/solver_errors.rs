@@ -29,7 +29,9 @@ fn a_step_past_the_stability_limit_is_caught_as_blow_up() {
                 assert!(step < 1000, "{damping:?}: caught late, at step {step}");
                 assert!(node < model.n_nodes());
             }
-            SolveError::NonFinite { step, .. } => panic!("{damping:?}: blow-up reached NaN at step {step} before the energy check"),
+            SolveError::NonFinite { step, .. } => {
+                panic!("{damping:?}: blow-up reached NaN at step {step} before the energy check")
+            }
             other => panic!("{damping:?}: {other}"),
         }
     }

@@ -1,6 +1,8 @@
 //! The spring force law, eq. 15-18 (DESIGN.md section 2), on hand-worked values.
 
-use cdem::physics::spring::{mohr_coulomb, spring_force, spring_forces, spring_stiffness, tension_cutoff, SpringState, Springs};
+use cdem::physics::spring::{
+    mohr_coulomb, spring_force, spring_forces, spring_stiffness, tension_cutoff, SpringState, Springs,
+};
 
 #[test]
 fn eq16_stiffness_is_modulus_times_area_over_thickness() {

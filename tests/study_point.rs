@@ -8,10 +8,29 @@
 fn column_point_of_the_study_fem_exact_cdem_within_one_percent() {
     let (cdem, fem) = cdem::study::column_base_point().unwrap();
     println!("study column point: CDEM L2 error {cdem:.3e}, FEM {fem:.3e}");
-    cdem::validation::record("study_point", &[
-        cdem::validation::Check::new("study: column 10 layers", "CDEM relative L2 error of u", cdem, 0.0, 0.01, "references/column.md", 0.0),
-        cdem::validation::Check::new("study: column 10 layers", "FEM relative L2 error of u", fem, 0.0, 1e-10, "references/column.md", 0.0),
-    ]);
+    cdem::validation::record(
+        "study_point",
+        &[
+            cdem::validation::Check::new(
+                "study: column 10 layers",
+                "CDEM relative L2 error of u",
+                cdem,
+                0.0,
+                0.01,
+                "references/column.md",
+                0.0,
+            ),
+            cdem::validation::Check::new(
+                "study: column 10 layers",
+                "FEM relative L2 error of u",
+                fem,
+                0.0,
+                1e-10,
+                "references/column.md",
+                0.0,
+            ),
+        ],
+    );
     assert!(fem < 1e-10, "FEM error {fem}");
     assert!(cdem < 0.01, "CDEM error {cdem}");
     assert!(cdem > 1e-5, "CDEM with springs cannot be exact: joint compliance is missing");

@@ -74,11 +74,13 @@ fn per_tet_rigid_motion_gives_zero_force() {
             let x = perturbed(base, 2.0, 0.3, seed);
             // Translation plus an infinitesimal rotation about an arbitrary point.
             let (a, w, o) = ([1e-3, -2e-3, 0.5e-3], [0.3e-3, -0.2e-3, 0.5e-3], [0.4, 1.1, -0.7]);
-            let u: Vec<f64> = x.iter().flat_map(|p| {
-                let r = cross(w, [p[0] - o[0], p[1] - o[1], p[2] - o[2]]);
-                [a[0] + r[0], a[1] + r[1], a[2] + r[2]]
-            })
-            .collect();
+            let u: Vec<f64> = x
+                .iter()
+                .flat_map(|p| {
+                    let r = cross(w, [p[0] - o[0], p[1] - o[1], p[2] - o[2]]);
+                    [a[0] + r[0], a[1] + r[1], a[2] + r[2]]
+                })
+                .collect();
             let (f_k, f_t, scale) = both(kind, &x, &u);
             assert!(max_abs(&f_t) <= REL_TOL * scale, "{kind:?} seed {seed}: per-tet rigid force {}", max_abs(&f_t));
             assert!(max_abs(&f_k) <= REL_TOL * scale, "{kind:?} seed {seed}: condensed rigid force {}", max_abs(&f_k));

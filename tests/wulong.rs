@@ -89,7 +89,8 @@ fn joint_faces(model: &Model) -> Vec<Face> {
         }
     }
     let sp = &model.springs;
-    let near = model.interfaces.iter().position(|i| i.name == "nearsurface_joints").expect("group nearsurface_joints") as u16;
+    let near =
+        model.interfaces.iter().position(|i| i.name == "nearsurface_joints").expect("group nearsurface_joints") as u16;
     let mut by_pair: BTreeMap<(usize, usize), Vec<usize>> = BTreeMap::new();
     for s in (0..sp.len()).filter(|&s| model.interfaces[sp.interface[s] as usize].strength.is_some()) {
         let (a, b) = (element_of[sp.a[s] as usize], element_of[sp.b[s] as usize]);
@@ -99,7 +100,12 @@ fn joint_faces(model: &Model) -> Vec<Face> {
         .into_iter()
         .map(|((a, b), springs)| {
             let z = springs.iter().map(|&s| model.x0[sp.a[s] as usize][2]).sum::<f64>() / springs.len() as f64;
-            let front = springs.iter().map(|&s| model.x0[sp.a[s] as usize]).filter(|x| x[1] < 1e-6).map(|x| (x[0], x[2])).collect();
+            let front = springs
+                .iter()
+                .map(|&s| model.x0[sp.a[s] as usize])
+                .filter(|x| x[1] < 1e-6)
+                .map(|x| (x[0], x[2]))
+                .collect();
             let near_surface = sp.interface[springs[0]] == near;
             Face { springs, elements: [a, b], front, z, near_surface }
         })
@@ -153,7 +159,10 @@ fn element_z(model: &Model, e: usize) -> f64 {
 
 fn element_motion(model: &Model, u: &[f64], u0: &[f64], e: usize) -> f64 {
     let c = model.elements.corners(e);
-    c.iter().map(|&i| (0..3).map(|d| (u[3 * i as usize + d] - u0[3 * i as usize + d]).powi(2)).sum::<f64>().sqrt()).sum::<f64>() / c.len() as f64
+    c.iter()
+        .map(|&i| (0..3).map(|d| (u[3 * i as usize + d] - u0[3 * i as usize + d]).powi(2)).sum::<f64>().sqrt())
+        .sum::<f64>()
+        / c.len() as f64
 }
 
 #[test]
@@ -184,7 +193,11 @@ fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_
         set.iter().filter(|f| failed_by(&r, f, end_step)).count() as f64 / set.len() as f64
     };
     let (near_failed, interior_failed) = (share(true), share(false));
-    println!("failed joint faces: near-surface {:.1} %, interior {:.1} %", 100.0 * near_failed, 100.0 * interior_failed);
+    println!(
+        "failed joint faces: near-surface {:.1} %, interior {:.1} %",
+        100.0 * near_failed,
+        100.0 * interior_failed
+    );
     assert!(near_failed > 0.5 && interior_failed < 0.1, "the weak band fails, the interior mostly holds");
 
     // The sequence: per stage, the bands where each kind of event first appears.
@@ -197,7 +210,11 @@ fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_
         for s in 0..sp.len() {
             if r.failed_at[s].is_some_and(|at| at <= stage.step) {
                 let b = band(model.x0[sp.a[s] as usize][2]);
-                let map = if r.state.springs.status[s] == SpringStatus::Tension { &mut first_tension } else { &mut first_shear };
+                let map = if r.state.springs.status[s] == SpringStatus::Tension {
+                    &mut first_tension
+                } else {
+                    &mut first_shear
+                };
                 map.entry(b).or_insert(k);
             }
         }
@@ -211,9 +228,12 @@ fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_
         states.push(st);
     }
     let mut events: BTreeMap<usize, Vec<String>> = BTreeMap::new();
-    for (what, map) in
-        [("shear failures", &first_shear), ("tension failures", &first_tension), ("cracks open", &first_open), ("blocks detach", &first_detached)]
-    {
+    for (what, map) in [
+        ("shear failures", &first_shear),
+        ("tension failures", &first_tension),
+        ("cracks open", &first_open),
+        ("blocks detach", &first_detached),
+    ] {
         let mut by_stage: BTreeMap<usize, Vec<Band>> = BTreeMap::new();
         for (&b, &k) in map.iter() {
             by_stage.entry(k).or_default().push(b);
@@ -232,28 +252,61 @@ fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_
         .collect();
     let tension = if first_tension.is_empty() { "none" } else { "some" };
     sequence.push(format!("end: {:?}; tension failures: {tension}", r.end));
-    println!("open cracks by band at the end: {:?}", BANDS.map(|b| faces.iter().zip(&states[last].open).filter(|(f, o)| **o && band(f.z) == b).count()));
+    println!(
+        "open cracks by band at the end: {:?}",
+        BANDS.map(|b| faces.iter().zip(&states[last].open).filter(|(f, o)| **o && band(f.z) == b).count())
+    );
     let widest = |k: usize| {
         BANDS.map(|b| {
-            faces.iter().filter(|f| band(f.z) == b && failed_by(&r, f, r.stages[k].step)).map(|f| opening(model, &r.stage_u[k], f)).fold(0.0, f64::max)
+            faces
+                .iter()
+                .filter(|f| band(f.z) == b && failed_by(&r, f, r.stages[k].step))
+                .map(|f| opening(model, &r.stage_u[k], f))
+                .fold(0.0, f64::max)
         })
     };
     let mm = |w: [f64; 4]| w.map(|v| format!("{:.1}", 1e3 * v)).join(" / ");
-    println!("widest failed joint toe / lower / middle / upper (mm): first stage {}, end {}", mm(widest(0)), mm(widest(last)));
+    println!(
+        "widest failed joint toe / lower / middle / upper (mm): first stage {}, end {}",
+        mm(widest(0)),
+        mm(widest(last))
+    );
 
     // Fig. 13 (the mesh) and Fig. 14: u_x, u_z since phase 1 at three stages.
     std::fs::create_dir_all("target/figures").unwrap();
-    let edges: Vec<Vec<(f64, f64)>> = front_patches(model, |_| 0.0).into_iter().map(|p| p.corners.iter().chain(p.corners.first()).copied().collect()).collect();
+    let edges: Vec<Vec<(f64, f64)>> = front_patches(model, |_| 0.0)
+        .into_iter()
+        .map(|p| p.corners.iter().chain(p.corners.first()).copied().collect())
+        .collect();
     let groups: Vec<Patch> = front_patches(model, |e| model.elements.material[e] as f64);
-    section_contour(Path::new("target/figures/fig13-mesh.png"), "Wulong mesh: interior (0) and near-surface band (1)", "group", &groups, &edges).unwrap();
+    section_contour(
+        Path::new("target/figures/fig13-mesh.png"),
+        "Wulong mesh: interior (0) and near-surface band (1)",
+        "group",
+        &groups,
+        &edges,
+    )
+    .unwrap();
     let n = r.stages.len();
     for (tag, k) in [("early", 0), ("middle", n / 2), ("end", n - 1)] {
         let du: Vec<f64> = r.stage_u[k].iter().zip(&r.u_elastic).map(|(a, b)| a - b).collect();
-        let cracks: Vec<Vec<(f64, f64)>> = faces.iter().zip(&states[k].open).filter(|(f, o)| **o && f.front.len() == 2).map(|(f, _)| f.front.clone()).collect();
+        let cracks: Vec<Vec<(f64, f64)>> = faces
+            .iter()
+            .zip(&states[k].open)
+            .filter(|(f, o)| **o && f.front.len() == 2)
+            .map(|(f, _)| f.front.clone())
+            .collect();
         for (comp, name) in [(0, "u_x"), (2, "u_z")] {
             let p: Vec<Patch> = front_patches(model, |e| element_mean_displacement(model, &du, e, comp));
             let title = format!("Wulong, phase 2 step {}: {name} since phase 1, open cracks", r.stages[k].step);
-            section_contour(Path::new(&format!("target/figures/fig14-{tag}-{name}.png")), &title, &format!("{name} (m)"), &p, &cracks).unwrap();
+            section_contour(
+                Path::new(&format!("target/figures/fig14-{tag}-{name}.png")),
+                &title,
+                &format!("{name} (m)"),
+                &p,
+                &cracks,
+            )
+            .unwrap();
         }
     }
     insta::assert_yaml_snapshot!("wulong_failure_sequence", sequence);
@@ -280,15 +333,26 @@ fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_
     );
     // Cracks open first below mid-height, then climb: the ones opening later lie higher.
     let first_bands: Vec<Band> = first_open.iter().filter(|(_, k)| **k == first_crack_stage).map(|(b, _)| *b).collect();
-    assert!(first_bands.iter().all(|b| *b <= Band::Lower), "the first cracks open below mid-height, not in {first_bands:?}");
-    assert!(!z_later.is_empty() && mean(&z_later) > mean(&z_first), "cracks climb: later cracks lie higher than the first ones");
+    assert!(
+        first_bands.iter().all(|b| *b <= Band::Lower),
+        "the first cracks open below mid-height, not in {first_bands:?}"
+    );
+    assert!(
+        !z_later.is_empty() && mean(&z_later) > mean(&z_first),
+        "cracks climb: later cracks lie higher than the first ones"
+    );
 
     // Blocks detach; the most moved block and the largest bulge are below mid-height.
     let u_end = &r.stage_u[last];
     let detached: Vec<usize> = (0..model.elements.len()).filter(|&e| states[last].detached[e]).collect();
-    let (moved, e_max) = (0..model.elements.len()).map(|e| (element_motion(model, u_end, &r.u_elastic, e), e)).max_by(|a, b| a.0.total_cmp(&b.0)).unwrap();
+    let (moved, e_max) = (0..model.elements.len())
+        .map(|e| (element_motion(model, u_end, &r.u_elastic, e), e))
+        .max_by(|a, b| a.0.total_cmp(&b.0))
+        .unwrap();
     let (bulge, e_bulge) = (0..model.elements.len())
-        .map(|e| (-(element_mean_displacement(model, u_end, e, 0) - element_mean_displacement(model, &r.u_elastic, e, 0)), e))
+        .map(|e| {
+            (-(element_mean_displacement(model, u_end, e, 0) - element_mean_displacement(model, &r.u_elastic, e, 0)), e)
+        })
         .max_by(|a, b| a.0.total_cmp(&b.0))
         .unwrap();
     println!(
@@ -300,15 +364,23 @@ fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_
         element_z(model, e_bulge)
     );
     assert!(!detached.is_empty(), "blocks detach");
-    assert!(band(element_z(model, e_max)) <= Band::Lower && band(element_z(model, e_bulge)) <= Band::Lower, "the lower slope moves most");
+    assert!(
+        band(element_z(model, e_max)) <= Band::Lower && band(element_z(model, e_bulge)) <= Band::Lower,
+        "the lower slope moves most"
+    );
     // No slide: the band as a whole barely moves in the last quarter of the run.
     let u_q = &r.stage_u[3 * last / 4];
     let ns = scene.material.iter().position(|m| m.group == "nearsurface").expect("volume group nearsurface");
-    let mut late: Vec<f64> =
-        (0..model.elements.len()).filter(|&e| model.elements.material[e] as usize == ns).map(|e| element_motion(model, u_end, u_q, e)).collect();
+    let mut late: Vec<f64> = (0..model.elements.len())
+        .filter(|&e| model.elements.material[e] as usize == ns)
+        .map(|e| element_motion(model, u_end, u_q, e))
+        .collect();
     late.sort_by(f64::total_cmp);
     let (p50, p90, pmax) = (late[late.len() / 2], late[9 * late.len() / 10], late[late.len() - 1]);
     println!("near-surface blocks' motion in the last quarter: median {p50:.2e} m, 90 % {p90:.2e} m, max {pmax:.2e} m");
     assert_ne!(r.end, EndState::GlobalSliding, "no slide without water: the bedding dips less than phi");
-    assert!(p90 < 1e-3, "the band stands (90 % of its blocks move less than 1 mm in the last quarter); only detached blocks move");
+    assert!(
+        p90 < 1e-3,
+        "the band stands (90 % of its blocks move less than 1 mm in the last quarter); only detached blocks move"
+    );
 }

@@ -13,7 +13,10 @@ fn validation_report() {
     let mut md = format!("# Validation report\n\n{} checks from {} tests.\n\n", rows.len(), fresh.len());
     md.push_str(&cdem::validation::markdown_table(&rows));
     if !stale.is_empty() {
-        md.push_str(&format!("\nStale (not recorded in this run): {:?}\n", stale.iter().map(|s| &s.0).collect::<Vec<_>>()));
+        md.push_str(&format!(
+            "\nStale (not recorded in this run): {:?}\n",
+            stale.iter().map(|s| &s.0).collect::<Vec<_>>()
+        ));
     }
     // Written to the stderr handle, not through eprintln!, so that the test
     // harness does not capture it: the table shows in every `cargo test`.
@@ -22,6 +25,12 @@ fn validation_report() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/validation-report.md");
     std::fs::write(&path, &md).unwrap();
     println!("written to {}", path.display());
-    let failed: Vec<String> = rows.iter().filter(|c| !c.passed()).map(|c| format!("{} / {}: {:.2e} > {:.1e}", c.case, c.quantity, c.rel_error(), c.tolerance.unwrap_or(f64::NAN))).collect();
+    let failed: Vec<String> = rows
+        .iter()
+        .filter(|c| !c.passed())
+        .map(|c| {
+            format!("{} / {}: {:.2e} > {:.1e}", c.case, c.quantity, c.rel_error(), c.tolerance.unwrap_or(f64::NAN))
+        })
+        .collect();
     assert!(failed.is_empty(), "failed checks: {failed:?}");
 }

@@ -12,7 +12,10 @@ fn root() -> &'static Path {
 /// The committed paper-slope meshes (`cdem::perf::SLOPE_MESHES`), coarse to
 /// fine, with their hexahedron counts (1000 refine^2): 250, 1000, 4000, 16000.
 pub fn meshes() -> Vec<(PathBuf, usize)> {
-    cdem::perf::SLOPE_MESHES.iter().map(|&(refine, path)| (root().join(path), (1000.0 * refine * refine) as usize)).collect()
+    cdem::perf::SLOPE_MESHES
+        .iter()
+        .map(|&(refine, path)| (root().join(path), (1000.0 * refine * refine) as usize))
+        .collect()
 }
 
 /// The paper slope's scene with another mesh.

@@ -108,9 +108,9 @@ pub fn sign_segments(s: &[f64], k_i: &[f64], min_length: f64) -> Vec<Segment> {
         }
     }
     loop {
-        let shortest = (0..runs.len()).filter(|&i| runs[i].s1 - runs[i].s0 < min_length).min_by(|&a, &b| {
-            (runs[a].s1 - runs[a].s0).total_cmp(&(runs[b].s1 - runs[b].s0))
-        });
+        let shortest = (0..runs.len())
+            .filter(|&i| runs[i].s1 - runs[i].s0 < min_length)
+            .min_by(|&a, &b| (runs[a].s1 - runs[a].s0).total_cmp(&(runs[b].s1 - runs[b].s0)));
         let Some(i) = shortest else { break };
         if runs.len() == 1 {
             break;

@@ -72,7 +72,13 @@ fn stations(mut pts: Vec<SurfacePoint>) -> Vec<SurfacePoint> {
 }
 
 /// Traction at the slip facets from cell stresses (`stress[c]` for mesh cell `c`).
-pub fn from_stresses(mesh: &Mesh, coords: &[[f64; 3]], group: &str, circle: &SlipCircle, stress: &[[f64; 6]]) -> Option<Vec<SurfacePoint>> {
+pub fn from_stresses(
+    mesh: &Mesh,
+    coords: &[[f64; 3]],
+    group: &str,
+    circle: &SlipCircle,
+    stress: &[[f64; 6]],
+) -> Option<Vec<SurfacePoint>> {
     let g = mesh.groups.iter().find(|g| g.name == group && g.dim == 2)?;
     let adj = FaceAdjacency::build(mesh).ok()?;
     let mut shared: HashMap<[usize; 4], [usize; 2]> = HashMap::new();
@@ -100,14 +106,20 @@ pub fn from_springs(model: &Model, state: &State, group: &str, circle: &SlipCirc
 }
 
 /// Traction at each spring of the slip interface, with the spring's index.
-pub fn spring_points(model: &Model, state: &State, group: &str, circle: &SlipCircle) -> Option<Vec<(usize, SurfacePoint)>> {
+pub fn spring_points(
+    model: &Model,
+    state: &State,
+    group: &str,
+    circle: &SlipCircle,
+) -> Option<Vec<(usize, SurfacePoint)>> {
     let iface = model.interfaces.iter().position(|i| i.name == group)? as u16;
     let sp = &model.springs;
     let mut pts = Vec::new();
     for k in (0..sp.len()).filter(|&k| sp.interface[k] == iface) {
         let (a, b) = (sp.a[k] as usize, sp.b[k] as usize);
         let d = relative_displacement(&state.u, a, b);
-        let f_on_a = spring_contact_force(sp.kn[k], sp.ks[k], sp.normal[k], d, state.springs.slip[k], state.springs.status[k]);
+        let f_on_a =
+            spring_contact_force(sp.kn[k], sp.ks[k], sp.normal[k], d, state.springs.slip[k], state.springs.status[k]);
         let (s, n, t) = circle.frame(model.x0[a]);
         // The spring normal points from a's element into b's: if it points out
         // of the mass, a is on the mass side and feels the ground's force.

@@ -73,7 +73,9 @@ enum Command {
 
 fn progress_bar(max: usize) -> ProgressBar {
     let pb = ProgressBar::new(max as u64);
-    pb.set_style(ProgressStyle::with_template("{spinner} step {pos} {msg} [{elapsed_precise}]").expect("valid template"));
+    pb.set_style(
+        ProgressStyle::with_template("{spinner} step {pos} {msg} [{elapsed_precise}]").expect("valid template"),
+    );
     pb
 }
 
@@ -92,9 +94,12 @@ fn main() -> ExitCode {
         }),
         Command::Perf { out, refine, no_damping } => {
             let opts = cdem::perf::PerfOptions { damping: !no_damping, refine, ..Default::default() };
-            cdem::perf::run_perf(std::path::Path::new("."), &out, &opts, &mut |what| eprintln!("perf: {what}")).map(|md| println!("{md}"))
+            cdem::perf::run_perf(std::path::Path::new("."), &out, &opts, &mut |what| eprintln!("perf: {what}"))
+                .map(|md| println!("{md}"))
         }
-        Command::Reproduce { out, regenerate } => cdem::reproduce::reproduce(&out, regenerate, &mut |what| eprintln!("reproduce: {what}")),
+        Command::Reproduce { out, regenerate } => {
+            cdem::reproduce::reproduce(&out, regenerate, &mut |what| eprintln!("reproduce: {what}"))
+        }
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -149,7 +154,11 @@ fn fem(scene_path: &std::path::Path, out: &std::path::Path) -> cdem::Result<()> 
 }
 
 /// A scene with `[failure]`: phase 1 (elastic) then phase 2 (breakable joints).
-fn run_progressive(scene: &Scene, params: &cdem::progressive::FailureParams, out: &std::path::Path) -> cdem::Result<()> {
+fn run_progressive(
+    scene: &Scene,
+    params: &cdem::progressive::FailureParams,
+    out: &std::path::Path,
+) -> cdem::Result<()> {
     let t0 = std::time::Instant::now();
     let pb = progress_bar(scene.solver.max_steps + params.max_steps);
     let r = cdem::progressive::run_progressive(scene, params, &mut |step, ratio| {
@@ -161,7 +170,14 @@ fn run_progressive(scene: &Scene, params: &cdem::progressive::FailureParams, out
     let converged = r.end == cdem::progressive::EndState::Equilibrium;
     let report = cdem::solver::RunReport { converged, steps: r.elastic.steps + r.phase2_steps, ..r.elastic.clone() };
     let summary = cdem::run::summarize(&r.model, &r.state, &report, stress.as_deref(), t0.elapsed().as_secs_f64());
-    let result = cdem::run::RunResult { model: r.model.clone(), state: r.state.clone(), report, stress, frames: Vec::new(), summary };
+    let result = cdem::run::RunResult {
+        model: r.model.clone(),
+        state: r.state.clone(),
+        report,
+        stress,
+        frames: Vec::new(),
+        summary,
+    };
     cdem::run::write_outputs(scene, &result, out)?;
     cdem::progressive::write_outputs(&r, out, scene.output.vtk)?;
     let last = r.stages.last();

@@ -162,7 +162,12 @@ pub struct ElementMatrices {
 
 /// Element stiffness and the consistent load of the body force `b = rho g`
 /// (N/m^3), by the cell's Gauss rule.
-pub fn element_matrices(kind: CellKind, x: &[[f64; 3]], lame: Lame, b: [f64; 3]) -> Result<ElementMatrices, BadJacobian> {
+pub fn element_matrices(
+    kind: CellKind,
+    x: &[[f64; 3]],
+    lame: Lame,
+    b: [f64; 3],
+) -> Result<ElementMatrices, BadJacobian> {
     let n = kind.n_nodes();
     let mut k = vec![0.0; 9 * n * n];
     let mut f = vec![0.0; 3 * n];
@@ -183,8 +188,6 @@ pub fn element_matrices(kind: CellKind, x: &[[f64; 3]], lame: Lame, b: [f64; 3])
     }
     Ok(ElementMatrices { k, f, volume })
 }
-
-
 
 /// Volume-averaged element stress from the corner displacements `ue`
 /// (`3c + i`, m).

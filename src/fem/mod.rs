@@ -90,8 +90,9 @@ pub fn solve(p: &FemProblem) -> crate::Result<FemSolution> {
         }
         let lame = p.materials[p.cell_material[c] as usize].lame;
         let m = 3 * cell.kind.n_nodes();
-        let sigma = element::element_stress(cell.kind, &p.cell_coords(c), &ue[..m], lame)
-            .map_err(|b| Error::from(SolveError::NonPositiveJacobian { element: cell.tag, point: b.point, det: b.det }))?;
+        let sigma = element::element_stress(cell.kind, &p.cell_coords(c), &ue[..m], lame).map_err(|b| {
+            Error::from(SolveError::NonPositiveJacobian { element: cell.tag, point: b.point, det: b.det })
+        })?;
         stress.push(sigma);
     }
     let mut timings = s.timings;

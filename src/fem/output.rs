@@ -40,7 +40,9 @@ pub fn vtu_string(sol: &FemSolution) -> String {
     for d in sol.u.chunks(3) {
         let _ = writeln!(s, "{:e} {:e} {:e}", d[0], d[1], d[2]);
     }
-    s.push_str("</DataArray>\n</PointData>\n<CellData>\n<DataArray type=\"Int32\" Name=\"material\" format=\"ascii\">\n");
+    s.push_str(
+        "</DataArray>\n</PointData>\n<CellData>\n<DataArray type=\"Int32\" Name=\"material\" format=\"ascii\">\n",
+    );
     for m in &sol.cell_material {
         let _ = write!(s, "{m} ");
     }

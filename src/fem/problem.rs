@@ -64,5 +64,3 @@ impl FemProblem {
         self.cells[c].corners().iter().map(|&n| self.coords[n]).collect()
     }
 }
-
-

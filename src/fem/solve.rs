@@ -130,9 +130,9 @@ pub fn solve_linear(p: &FemProblem) -> Result<Solved, Error> {
             .map_err(|e| SolveError::Factorization { reason: format!("{e:?}") })?;
         drop(trip);
         let llt = k.sp_cholesky(Side::Lower).map_err(|e| match e {
-            faer::sparse::linalg::LltError::Numeric(faer::linalg::cholesky::llt::factor::LltError::NonPositivePivot {
-                index,
-            }) => SolveError::NotPositiveDefinite { dofs: n_free, pivot: index },
+            faer::sparse::linalg::LltError::Numeric(
+                faer::linalg::cholesky::llt::factor::LltError::NonPositivePivot { index },
+            ) => SolveError::NotPositiveDefinite { dofs: n_free, pivot: index },
             other => SolveError::Factorization { reason: format!("{other:?}") },
         })?;
         factor_s = t1.elapsed().as_secs_f64();
@@ -217,7 +217,11 @@ fn check_rigid_motions(p: &FemProblem, used: &[bool]) -> Result<(), SolveError> 
         }
     }
     let eig = SymmetricEigen::new(gram);
-    let (imin, lmin) = eig.eigenvalues.iter().enumerate().fold((0, f64::INFINITY), |acc, (i, &v)| if v < acc.1 { (i, v) } else { acc });
+    let (imin, lmin) =
+        eig.eigenvalues
+            .iter()
+            .enumerate()
+            .fold((0, f64::INFINITY), |acc, (i, &v)| if v < acc.1 { (i, v) } else { acc });
     let lmax = eig.eigenvalues.iter().fold(0.0f64, |a, &v| a.max(v));
     if lmax > 0.0 && lmin > 1e-12 * lmax {
         return Ok(());

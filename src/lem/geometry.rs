@@ -76,7 +76,20 @@ pub(crate) struct Slices {
 impl Slices {
     pub fn with_capacity(n: usize) -> Self {
         let v = || Vec::with_capacity(n);
-        Slices { w: v(), sin_a: v(), cos_a: v(), l: v(), c: v(), tan_phi: v(), column: Vec::with_capacity(16), xb: v(), ub: v(), wb: v(), zg: v(), ..Default::default() }
+        Slices {
+            w: v(),
+            sin_a: v(),
+            cos_a: v(),
+            l: v(),
+            c: v(),
+            tan_phi: v(),
+            column: Vec::with_capacity(16),
+            xb: v(),
+            ub: v(),
+            wb: v(),
+            zg: v(),
+            ..Default::default()
+        }
     }
 
     pub fn len(&self) -> usize {
@@ -202,7 +215,8 @@ const ASIN_SERIES_MAX: f64 = 0.1;
 #[inline]
 fn asin_series(x: f64) -> f64 {
     // (2k)! / (4^k (k!)^2 (2k + 1)), k = 0..7.
-    const A: [f64; 8] = [1.0, 1.0 / 6.0, 3.0 / 40.0, 5.0 / 112.0, 35.0 / 1152.0, 63.0 / 2816.0, 231.0 / 13312.0, 143.0 / 10240.0];
+    const A: [f64; 8] =
+        [1.0, 1.0 / 6.0, 3.0 / 40.0, 5.0 / 112.0, 35.0 / 1152.0, 63.0 / 2816.0, 231.0 / 13312.0, 143.0 / 10240.0];
     let y = x * x;
     // Horner; plain multiply-add (`mul_add` is a library call without `target-cpu`).
     let mut p = A[7];
@@ -274,7 +288,10 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
     };
     // Slice i's arc length and area (ground trapezoid less the arc's) for the angle `dbeta`.
     let arc = |i: usize, dx: f64, dbeta: f64| {
-        (r * dbeta, 0.5 * (zg[i] + zg[i + 1]) * dx - (c.zc * dx - 0.5 * (ub[i + 1] * wb[i + 1] - ub[i] * wb[i] + r2 * dbeta)))
+        (
+            r * dbeta,
+            0.5 * (zg[i] + zg[i + 1]) * dx - (c.zc * dx - 0.5 * (ub[i + 1] * wb[i + 1] - ub[i] * wb[i] + r2 * dbeta)),
+        )
     };
     let mut fix = false;
     for i in 0..n {

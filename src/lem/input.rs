@@ -79,7 +79,14 @@ pub struct SearchSpec {
 
 impl Default for SearchSpec {
     fn default() -> Self {
-        SearchSpec { grid: Some(GridSpec::default()), entry_exit: Some(EntryExitSpec::default()), refine: true, min_depth: None, min_width: None, parallel: true }
+        SearchSpec {
+            grid: Some(GridSpec::default()),
+            entry_exit: Some(EntryExitSpec::default()),
+            refine: true,
+            min_depth: None,
+            min_width: None,
+            parallel: true,
+        }
     }
 }
 
@@ -250,7 +257,9 @@ fn check_count(key: &str, n: usize, lo: usize, hi: usize) -> Result<(), SceneErr
 
 fn check_range(key: &str, r: Option<[f64; 2]>) -> Result<(), SceneError> {
     match r {
-        Some([a, b]) if !(a.is_finite() && b.is_finite() && a <= b) => Err(SceneError::invalid(key, "must be [low, high], finite, low <= high")),
+        Some([a, b]) if !(a.is_finite() && b.is_finite() && a <= b) => {
+            Err(SceneError::invalid(key, "must be [low, high], finite, low <= high"))
+        }
         _ => Ok(()),
     }
 }
@@ -265,11 +274,22 @@ fn check_length(key: &str, v: Option<f64>) -> Result<(), SceneError> {
 impl LemInput {
     /// Parses and validates LEM TOML text; `base_dir` resolves `from_mesh`.
     pub fn from_toml(text: &str, base_dir: &Path, path_for_errors: &Path) -> crate::Result<Self> {
-        let file: FileToml = toml::from_str(text).map_err(|e| SceneError::Syntax { path: path_for_errors.to_path_buf(), message: e.to_string() })?;
+        let file: FileToml = toml::from_str(text)
+            .map_err(|e| SceneError::Syntax { path: path_for_errors.to_path_buf(), message: e.to_string() })?;
         let s = file.section;
         let (ground, mesh_z_min) = match (s.ground, &s.from_mesh) {
-            (Some(_), Some(_)) => return Err(SceneError::invalid("section.from_mesh", "give either section.ground or section.from_mesh, not both").into()),
-            (None, None) => return Err(SceneError::invalid("section.ground", "missing: give section.ground or section.from_mesh").into()),
+            (Some(_), Some(_)) => {
+                return Err(SceneError::invalid(
+                    "section.from_mesh",
+                    "give either section.ground or section.from_mesh, not both",
+                )
+                .into())
+            }
+            (None, None) => {
+                return Err(
+                    SceneError::invalid("section.ground", "missing: give section.ground or section.from_mesh").into()
+                )
+            }
             (Some(g), None) => {
                 if s.ground_group.is_some() || s.y_plane.is_some() {
                     return Err(SceneError::invalid("section.ground_group", "only used with section.from_mesh").into());
@@ -277,26 +297,47 @@ impl LemInput {
                 (g, None)
             }
             (None, Some(mesh_path)) => {
-                let group = s.ground_group.as_deref().ok_or_else(|| SceneError::invalid("section.ground_group", "missing: the mesh's ground surface group"))?;
+                let group = s.ground_group.as_deref().ok_or_else(|| {
+                    SceneError::invalid("section.ground_group", "missing: the mesh's ground surface group")
+                })?;
                 let mesh = crate::mesh::gmsh::read_msh(&base_dir.join(mesh_path))?;
                 let (g, z) = LemSection::from_mesh(&mesh, group, s.y_plane)?;
                 (g, Some(z))
             }
         };
         let lower = match (s.z_min, s.lower_bound, mesh_z_min) {
-            (Some(_), Some(_), _) => return Err(SceneError::invalid("section.lower_bound", "give either section.z_min or section.lower_bound, not both").into()),
+            (Some(_), Some(_), _) => {
+                return Err(SceneError::invalid(
+                    "section.lower_bound",
+                    "give either section.z_min or section.lower_bound, not both",
+                )
+                .into())
+            }
             (Some(z), None, _) => LowerBound::Level(z),
             (None, Some(p), _) => LowerBound::Polyline(p),
             (None, None, Some(z)) => LowerBound::Level(z),
-            (None, None, None) => return Err(SceneError::invalid("section.z_min", "missing: the level slip circles may not pass below (or section.lower_bound)").into()),
+            (None, None, None) => {
+                return Err(SceneError::invalid(
+                    "section.z_min",
+                    "missing: the level slip circles may not pass below (or section.lower_bound)",
+                )
+                .into())
+            }
         };
         let mut background = None;
         let mut zones = Vec::new();
         for (i, m) in file.material.into_iter().enumerate() {
-            let material = Material { cohesion: m.cohesion, friction_angle: m.friction_angle, unit_weight: m.unit_weight };
+            let material =
+                Material { cohesion: m.cohesion, friction_angle: m.friction_angle, unit_weight: m.unit_weight };
             match m.zone {
                 Some(polygon) => zones.push(Zone { polygon, material }),
-                None if background.is_some() => return Err(SceneError::invalid(format!("material[{i}].zone"), "missing: only one material may fill the whole section").into()),
+                None if background.is_some() => {
+                    return Err(SceneError::invalid(
+                        format!("material[{i}].zone"),
+                        "missing: only one material may fill the whole section",
+                    )
+                    .into())
+                }
                 None => background = Some(material),
             }
         }
@@ -311,7 +352,9 @@ impl LemInput {
         methods.dedup();
 
         let mode = match (file.circle, file.search) {
-            (Some(_), Some(_)) => return Err(SceneError::invalid("circle", "give either [circle] or [search], not both").into()),
+            (Some(_), Some(_)) => {
+                return Err(SceneError::invalid("circle", "give either [circle] or [search], not both").into())
+            }
             (Some(c), None) => {
                 if !(c.xc.is_finite() && c.zc.is_finite() && c.r.is_finite() && c.r > 0.0) {
                     return Err(SceneError::invalid("circle", "xc, zc must be finite and r > 0").into());
@@ -349,7 +392,8 @@ fn search_spec(t: Option<SearchToml>) -> Result<SearchSpec, SceneError> {
         None => Some(EntryExitSpec::default()),
         Some(e) if !e.enabled => None,
         Some(e) => {
-            let s = EntryExitSpec { exit: e.exit, entry: e.entry, n_exit: e.n_exit, n_entry: e.n_entry, radii: e.radii };
+            let s =
+                EntryExitSpec { exit: e.exit, entry: e.entry, n_exit: e.n_exit, n_entry: e.n_entry, radii: e.radii };
             check_range("search.entry_exit.exit", s.exit)?;
             check_range("search.entry_exit.entry", s.entry)?;
             check_count("search.entry_exit.n_exit", s.n_exit, 1, 1000)?;
@@ -363,5 +407,12 @@ fn search_spec(t: Option<SearchToml>) -> Result<SearchSpec, SceneError> {
     }
     check_length("search.min_depth", t.min_depth)?;
     check_length("search.min_width", t.min_width)?;
-    Ok(SearchSpec { grid, entry_exit, refine: t.refine, min_depth: t.min_depth, min_width: t.min_width, parallel: t.parallel })
+    Ok(SearchSpec {
+        grid,
+        entry_exit,
+        refine: t.refine,
+        min_depth: t.min_depth,
+        min_width: t.min_width,
+        parallel: t.parallel,
+    })
 }

@@ -62,7 +62,7 @@ use serde::Serialize;
 use crate::error::SceneError;
 
 pub use geometry::{slices_of, Reject, SliceInfo};
-pub use input::{GridSpec, EntryExitSpec, LemInput, Mode, SearchSpec};
+pub use input::{EntryExitSpec, GridSpec, LemInput, Mode, SearchSpec};
 pub use methods::{evaluate_circle, CircleFs};
 pub use section::{Facing, LemSection, LowerBound, Material, Zone};
 

@@ -136,7 +136,16 @@ fn reason_index(e: Reject) -> usize {
     }
 }
 
-const REASONS: [&str; 8] = ["degenerate", "misses the ground", "open arc", "not two crossings", "below the lower bound", "sliver", "wrong direction", "no material"];
+const REASONS: [&str; 8] = [
+    "degenerate",
+    "misses the ground",
+    "open arc",
+    "not two crossings",
+    "below the lower bound",
+    "sliver",
+    "wrong direction",
+    "no material",
+];
 
 fn dist_to_polyline(p: &[[f64; 2]], q: [f64; 2]) -> f64 {
     let mut d2 = f64::INFINITY;
@@ -262,14 +271,25 @@ impl GridCircles {
 
     /// The `q`-th circle, `q` in `0..radii`, smallest first.
     fn circle(&self, q: usize) -> Circle {
-        Circle { xc: self.centre[0], zc: self.centre[1], r: self.r_lo + (self.r_hi - self.r_lo) * (q + 1) as f64 / self.radii as f64 }
+        Circle {
+            xc: self.centre[0],
+            zc: self.centre[1],
+            r: self.r_lo + (self.r_hi - self.r_lo) * (q + 1) as f64 / self.radii as f64,
+        }
     }
 }
 
 /// Nelder-Mead on `x` in R^3 (reflection 1, expansion 2, contraction 1/2,
 /// shrink 1/2); stops when the simplex's values agree within `ftol` and its
 /// vertices within `xtol` of the best, or after `max_evals`.
-fn nelder_mead(obj: &mut impl FnMut([f64; 3]) -> f64, x0: [f64; 3], f0: f64, step: f64, xtol: f64, max_evals: usize) -> ([f64; 3], f64) {
+fn nelder_mead(
+    obj: &mut impl FnMut([f64; 3]) -> f64,
+    x0: [f64; 3],
+    f0: f64,
+    step: f64,
+    xtol: f64,
+    max_evals: usize,
+) -> ([f64; 3], f64) {
     let mut p = [x0; 4];
     let mut v = [f0; 4];
     for i in 0..3 {
@@ -277,7 +297,9 @@ fn nelder_mead(obj: &mut impl FnMut([f64; 3]) -> f64, x0: [f64; 3], f0: f64, ste
         v[i + 1] = obj(p[i + 1]);
     }
     let mut evals = 3;
-    let comb = |a: [f64; 3], b: [f64; 3], t: f64| [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])];
+    let comb = |a: [f64; 3], b: [f64; 3], t: f64| {
+        [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])]
+    };
     while evals < max_evals {
         let mut idx = [0usize, 1, 2, 3];
         idx.sort_by(|&a, &b| v[a].total_cmp(&v[b]).then(a.cmp(&b)));
@@ -340,7 +362,11 @@ fn refine(ev: &Evaluator, m: Method, start: Best, h: f64) -> (Best, usize, usize
     let x0 = [start.circle.xc, start.circle.zc, start.circle.r];
     let (x1, f1) = nelder_mead(&mut obj, x0, start.fs, 0.05 * h, 1e-6 * h, 600);
     let (x2, f2) = nelder_mead(&mut obj, x1, f1, 0.01 * h, 1e-7 * h, 400);
-    let best = if f2 < start.fs { Best { fs: f2, key: start.key, circle: Circle { xc: x2[0], zc: x2[1], r: x2[2] } } } else { start };
+    let best = if f2 < start.fs {
+        Best { fs: f2, key: start.key, circle: Circle { xc: x2[0], zc: x2[1], r: x2[2] } }
+    } else {
+        start
+    };
     (best, evaluated, rejected)
 }
 
@@ -356,7 +382,10 @@ pub(crate) fn run(input: &LemInput, spec: &SearchSpec) -> Result<LemResult, crat
     let plan = Plan::new(f, spec);
     let n = input.slices;
     let acc = if spec.parallel {
-        (0..plan.n_jobs()).into_par_iter().map_init(|| Slices::with_capacity(n), |s, j| plan.job(&ev, want, j, s)).reduce(Acc::default, Acc::merge)
+        (0..plan.n_jobs())
+            .into_par_iter()
+            .map_init(|| Slices::with_capacity(n), |s, j| plan.job(&ev, want, j, s))
+            .reduce(Acc::default, Acc::merge)
     } else {
         let mut s = Slices::with_capacity(n);
         (0..plan.n_jobs()).fold(Acc::default(), |a, j| a.merge(plan.job(&ev, want, j, &mut s)))
@@ -377,9 +406,21 @@ pub(crate) fn run(input: &LemInput, spec: &SearchSpec) -> Result<LemResult, crat
     let refined: Vec<(Method, Best, usize, usize)> = if !spec.refine {
         tasks.iter().map(|&(m, b)| (m, b, 0, 0)).collect()
     } else if spec.parallel {
-        tasks.par_iter().map(|&(m, b)| { let (r, e, j) = refine(&ev, m, b, h); (m, r, e, j) }).collect()
+        tasks
+            .par_iter()
+            .map(|&(m, b)| {
+                let (r, e, j) = refine(&ev, m, b, h);
+                (m, r, e, j)
+            })
+            .collect()
     } else {
-        tasks.iter().map(|&(m, b)| { let (r, e, j) = refine(&ev, m, b, h); (m, r, e, j) }).collect()
+        tasks
+            .iter()
+            .map(|&(m, b)| {
+                let (r, e, j) = refine(&ev, m, b, h);
+                (m, r, e, j)
+            })
+            .collect()
     };
     let mut best: [Option<Best>; 3] = [None; 3];
     for (m, b, e, j) in refined {
@@ -446,7 +487,8 @@ mod tests {
     /// Slices as before: `beta = asin(u / r)` at the ends, `alpha` their mean.
     fn reference_slices(f: &Frame, c: Circle, n: usize) -> (Vec<[f64; 4]>, f64) {
         let (xx, xe) = cut(f, c).unwrap();
-        let sector = |u: f64| 0.5 * (u * (c.r * c.r - u * u).max(0.0).sqrt() + c.r * c.r * (u / c.r).clamp(-1.0, 1.0).asin());
+        let sector =
+            |u: f64| 0.5 * (u * (c.r * c.r - u * u).max(0.0).sqrt() + c.r * c.r * (u / c.r).clamp(-1.0, 1.0).asin());
         let gamma = f.homogeneous().unwrap().gamma;
         let b = (xe - xx) / n as f64;
         let (mut out, mut drive) = (Vec::new(), 0.0);
@@ -455,7 +497,9 @@ mod tests {
             let (b0, b1) = (((x0 - c.xc) / c.r).clamp(-1.0, 1.0).asin(), ((x1 - c.xc) / c.r).clamp(-1.0, 1.0).asin());
             let (sa, ca) = (0.5 * (b0 + b1)).sin_cos();
             let mut k = 0;
-            let area = (ground_integral(&f.ground, x0, x1, &mut k) - (c.zc * (x1 - x0) - (sector(x1 - c.xc) - sector(x0 - c.xc)))).max(0.0);
+            let area = (ground_integral(&f.ground, x0, x1, &mut k)
+                - (c.zc * (x1 - x0) - (sector(x1 - c.xc) - sector(x0 - c.xc))))
+            .max(0.0);
             drive += gamma * area * sa;
             out.push([gamma * area, sa, ca, c.r * (b1 - b0)]);
         }
@@ -524,7 +568,12 @@ mod tests {
                     let (old, drive) = reference_slices(f, c, n);
                     let scale = old.iter().map(|v| v[0]).fold(0.0, f64::max);
                     for (i, v) in old.iter().enumerate() {
-                        let d = [(s.w[i] - v[0]).abs() / scale, (s.sin_a[i] - v[1]).abs(), (s.cos_a[i] - v[2]).abs(), (s.l[i] - v[3]).abs() / v[3]];
+                        let d = [
+                            (s.w[i] - v[0]).abs() / scale,
+                            (s.sin_a[i] - v[1]).abs(),
+                            (s.cos_a[i] - v[2]).abs(),
+                            (s.l[i] - v[3]).abs() / v[3],
+                        ];
                         for k in 0..4 {
                             geo_err[k] = geo_err[k].max(d[k]);
                         }
@@ -532,7 +581,11 @@ mod tests {
                     let o = ordinary(&s).unwrap();
                     let new = bishop_counted(&s, o);
                     let old = reference_bishop(&old, drive, strength.c, strength.tan_phi, o);
-                    assert_eq!(new.is_some(), old.is_some(), "{path}: {c:?}: Bishop F {new:?} (Newton) but {old:?} (fixed point)");
+                    assert_eq!(
+                        new.is_some(),
+                        old.is_some(),
+                        "{path}: {c:?}: Bishop F {new:?} (Newton) but {old:?} (fixed point)"
+                    );
                     if let (Some((a, na)), Some((b, nb))) = (new, old) {
                         with_fs += 1;
                         passes_new += na;

@@ -208,7 +208,10 @@ impl LemSection {
             LowerBound::Level(z) => {
                 let zg = ground.iter().map(|p| p[1]).fold(f64::INFINITY, f64::min);
                 if !z.is_finite() || *z >= zg {
-                    return Err(SceneError::invalid("section.z_min", format!("must be finite and below the lowest ground point (z = {zg})")));
+                    return Err(SceneError::invalid(
+                        "section.z_min",
+                        format!("must be finite and below the lowest ground point (z = {zg})"),
+                    ));
                 }
             }
             LowerBound::Polyline(lb) => {
@@ -216,7 +219,8 @@ impl LemSection {
                 if lb[0][0] > gx0 || lb[lb.len() - 1][0] < gx1 {
                     return Err(SceneError::invalid("section.lower_bound", "its x-range must cover the ground's"));
                 }
-                let below = ground.iter().all(|p| polyline_z(lb, p[0]) < p[1]) && lb.iter().filter(|q| q[0] >= gx0 && q[0] <= gx1).all(|q| q[1] < polyline_z(&ground, q[0]));
+                let below = ground.iter().all(|p| polyline_z(lb, p[0]) < p[1])
+                    && lb.iter().filter(|q| q[0] >= gx0 && q[0] <= gx1).all(|q| q[1] < polyline_z(&ground, q[0]));
                 if !below {
                     return Err(SceneError::invalid("section.lower_bound", "must lie below the ground everywhere"));
                 }
@@ -239,7 +243,12 @@ impl LemSection {
             Some(f) => f,
             None if ground[ground.len() - 1][1] > ground[0][1] => Facing::Left,
             None if ground[ground.len() - 1][1] < ground[0][1] => Facing::Right,
-            None => return Err(SceneError::invalid("section.facing", "the ground's ends are level: say which way the slope faces (\"left\" or \"right\")")),
+            None => {
+                return Err(SceneError::invalid(
+                    "section.facing",
+                    "the ground's ends are level: say which way the slope faces (\"left\" or \"right\")",
+                ))
+            }
         };
         let frame = build_frame(&ground, &lower_bound, background, &zones, facing);
         Ok(LemSection { ground, lower_bound, background, zones, facing, frame })
@@ -251,7 +260,11 @@ impl LemSection {
     /// agree within 1e-9 of the model size must agree in z too, else the
     /// ground is not a function of x: error). The lower bound is the lowest
     /// node of the mesh. Materials are added by the caller.
-    pub fn from_mesh(mesh: &Mesh, ground_group: &str, y_plane: Option<f64>) -> Result<(Vec<[f64; 2]>, f64), SceneError> {
+    pub fn from_mesh(
+        mesh: &Mesh,
+        ground_group: &str,
+        y_plane: Option<f64>,
+    ) -> Result<(Vec<[f64; 2]>, f64), SceneError> {
         let key = "section.ground_group";
         let g = mesh
             .group(ground_group)
@@ -275,7 +288,13 @@ impl LemSection {
             match ground.last() {
                 Some(q) if (p[0] - q[0]).abs() <= tol => {
                     if (p[1] - q[1]).abs() > tol {
-                        return Err(SceneError::invalid(key, format!("the ground has two heights ({} and {}) at x = {}: not a function of x", q[1], p[1], p[0])));
+                        return Err(SceneError::invalid(
+                            key,
+                            format!(
+                                "the ground has two heights ({} and {}) at x = {}: not a function of x",
+                                q[1], p[1], p[0]
+                            ),
+                        ));
                     }
                 }
                 _ => ground.push(p),
@@ -306,7 +325,13 @@ impl LemSection {
     }
 }
 
-fn build_frame(ground: &[[f64; 2]], lower: &LowerBound, background: Option<Material>, zones: &[Zone], facing: Facing) -> Frame {
+fn build_frame(
+    ground: &[[f64; 2]],
+    lower: &LowerBound,
+    background: Option<Material>,
+    zones: &[Zone],
+    facing: Facing,
+) -> Frame {
     let mirrored = facing == Facing::Right;
     let line = |p: &[[f64; 2]]| if mirrored { mirror(p, true) } else { p.to_vec() };
     let g = line(ground);

@@ -92,4 +92,3 @@ pub fn polygon_normal_area(p: &[[f64; 3]]) -> ([f64; 3], f64) {
         ([0.0; 3], 0.0)
     }
 }
-

@@ -15,14 +15,8 @@ pub enum CellKind {
     Hex8,
 }
 
-const HEX_FACES: [&[usize]; 6] = [
-    &[0, 3, 2, 1],
-    &[4, 5, 6, 7],
-    &[0, 1, 5, 4],
-    &[3, 7, 6, 2],
-    &[0, 4, 7, 3],
-    &[1, 2, 6, 5],
-];
+const HEX_FACES: [&[usize]; 6] =
+    [&[0, 3, 2, 1], &[4, 5, 6, 7], &[0, 1, 5, 4], &[3, 7, 6, 2], &[0, 4, 7, 3], &[1, 2, 6, 5]];
 const PRISM_FACES: [&[usize]; 5] = [&[0, 2, 1], &[3, 4, 5], &[0, 1, 4, 3], &[1, 2, 5, 4], &[0, 3, 5, 2]];
 const TET_FACES: [&[usize]; 4] = [&[0, 2, 1], &[0, 1, 3], &[0, 3, 2], &[1, 2, 3]];
 
@@ -106,7 +100,8 @@ impl Decomposition {
             return Self { n_corners: 4, weights, tets: vec![[0, 1, 2, 3]] };
         }
         let faces = kind.faces();
-        let mut weights: Vec<Vec<f64>> = (0..n).map(|p| (0..n).map(|c| f64::from(u8::from(p == c))).collect()).collect();
+        let mut weights: Vec<Vec<f64>> =
+            (0..n).map(|p| (0..n).map(|c| f64::from(u8::from(p == c))).collect()).collect();
         for f in faces {
             let mut w = vec![0.0; n];
             for &c in *f {

@@ -88,7 +88,8 @@ pub fn build(mesh: &Mesh, scene: &Scene) -> Result<Model, Error> {
     }
 
     // 5. Springs on every shared face that is not merged.
-    let springs = make_springs(mesh, scene, &adj, &coords, &interfaces, &face_interface, |c, n| node_of_slot[slot(c, n)]);
+    let springs =
+        make_springs(mesh, scene, &adj, &coords, &interfaces, &face_interface, |c, n| node_of_slot[slot(c, n)]);
 
     // 6. Constraints: every copy of a fixed mesh node is fixed.
     let mesh_fixed = fixed_mesh_nodes(mesh, scene)?;
@@ -99,7 +100,19 @@ pub fn build(mesh: &Mesh, scene: &Scene) -> Result<Model, Error> {
     let f_ext = (0..3 * n_nodes).map(|k| mass[k / 3] * g[k % 3]).collect();
 
     let gather = Gather::build(&el, &springs, n_nodes);
-    Ok(Model { x0, mesh_node, mass, fixed, f_ext, elements: el, springs, materials, interfaces, gather, mesh_coords: coords })
+    Ok(Model {
+        x0,
+        mesh_node,
+        mass,
+        fixed,
+        f_ext,
+        elements: el,
+        springs,
+        materials,
+        interfaces,
+        gather,
+        mesh_coords: coords,
+    })
 }
 
 /// The scene's `[[material]]` sections as materials (in scene order).
@@ -107,7 +120,10 @@ pub(crate) fn scene_materials(scene: &Scene) -> Vec<Material> {
     scene
         .material
         .iter()
-        .map(|m| Material { lame: YoungPoisson { young: m.youngs_modulus, poisson: m.poisson_ratio }.into(), density: m.density })
+        .map(|m| Material {
+            lame: YoungPoisson { young: m.youngs_modulus, poisson: m.poisson_ratio }.into(),
+            density: m.density,
+        })
         .collect()
 }
 
@@ -156,8 +172,11 @@ pub(crate) fn perturbed_coordinates(mesh: &Mesh, scene: &Scene, adj: &FaceAdjace
 
 /// Interface 0 is `[joints]`; each `[[interface]]` maps its facets' keys to its index.
 fn classify_interfaces(mesh: &Mesh, scene: &Scene) -> Result<(Vec<Interface>, HashMap<FaceKey, usize>), Error> {
-    let mut interfaces =
-        vec![Interface { name: "joints".into(), mode: scene.joints.mode, strength: scene.joints.strength.map(Into::into) }];
+    let mut interfaces = vec![Interface {
+        name: "joints".into(),
+        mode: scene.joints.mode,
+        strength: scene.joints.strength.map(Into::into),
+    }];
     let mut map = HashMap::new();
     for (i, s) in scene.interface.iter().enumerate() {
         let g = mesh

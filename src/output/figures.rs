@@ -62,7 +62,15 @@ fn range(values: impl Iterator<Item = f64>, log: bool) -> (f64, f64) {
 }
 
 /// A line plot (linear or log axes) to a PNG.
-pub fn line_plot(path: &Path, title: &str, x_label: &str, y_label: &str, series: &[Series], x: Scale, y: Scale) -> Result<(), Error> {
+pub fn line_plot(
+    path: &Path,
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    series: &[Series],
+    x: Scale,
+    y: Scale,
+) -> Result<(), Error> {
     init_fonts();
     let root = BitMapBackend::new(path, (900, 600)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| plot_err(path, e))?;
@@ -74,7 +82,13 @@ pub fn line_plot(path: &Path, title: &str, x_label: &str, y_label: &str, series:
         ($chart:expr) => {{
             let mut chart = $chart.map_err(|e| plot_err(path, e))?;
             let fmt = |log: bool| {
-                move |v: &f64| if log { format!("{v:.0e}") } else { format!("{v:.6}").trim_end_matches('0').trim_end_matches('.').to_string() }
+                move |v: &f64| {
+                    if log {
+                        format!("{v:.0e}")
+                    } else {
+                        format!("{v:.6}").trim_end_matches('0').trim_end_matches('.').to_string()
+                    }
+                }
             };
             chart
                 .configure_mesh()
@@ -87,14 +101,17 @@ pub fn line_plot(path: &Path, title: &str, x_label: &str, y_label: &str, series:
                 .map_err(|e| plot_err(path, e))?;
             for (k, s) in series.iter().enumerate() {
                 let c = PALETTE[k % PALETTE.len()];
-                let pts: Vec<(f64, f64)> = s.points.iter().copied().filter(|p| p.0.is_finite() && p.1.is_finite()).collect();
+                let pts: Vec<(f64, f64)> =
+                    s.points.iter().copied().filter(|p| p.0.is_finite() && p.1.is_finite()).collect();
                 chart
                     .draw_series(LineSeries::new(pts.clone(), c.stroke_width(2)))
                     .map_err(|e| plot_err(path, e))?
                     .label(s.name)
                     .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2)));
                 if pts.len() <= 200 {
-                    chart.draw_series(pts.iter().map(|&p| Circle::new(p, 3, c.filled()))).map_err(|e| plot_err(path, e))?;
+                    chart
+                        .draw_series(pts.iter().map(|&p| Circle::new(p, 3, c.filled())))
+                        .map_err(|e| plot_err(path, e))?;
                 }
             }
             chart
@@ -120,7 +137,8 @@ pub fn line_plot(path: &Path, title: &str, x_label: &str, y_label: &str, series:
 /// "coolwarm"-like ramp).
 pub fn colormap(t: f64) -> RGBColor {
     let t = t.clamp(0.0, 1.0);
-    let stops = [(59.0, 76.0, 192.0), (141.0, 176.0, 254.0), (221.0, 221.0, 221.0), (244.0, 154.0, 123.0), (180.0, 4.0, 38.0)];
+    let stops =
+        [(59.0, 76.0, 192.0), (141.0, 176.0, 254.0), (221.0, 221.0, 221.0), (244.0, 154.0, 123.0), (180.0, 4.0, 38.0)];
     let x = t * (stops.len() - 1) as f64;
     let i = (x.floor() as usize).min(stops.len() - 2);
     let f = x - i as f64;
@@ -136,7 +154,13 @@ pub struct Patch {
 
 /// Filled-polygon contour of a section (e.g. element faces on the slab's front
 /// face coloured by sigma_zz) with a colour bar, plus optional overlay lines.
-pub fn section_contour(path: &Path, title: &str, label: &str, patches: &[Patch], overlays: &[Vec<(f64, f64)>]) -> Result<(), Error> {
+pub fn section_contour(
+    path: &Path,
+    title: &str,
+    label: &str,
+    patches: &[Patch],
+    overlays: &[Vec<(f64, f64)>],
+) -> Result<(), Error> {
     init_fonts();
     let root = BitMapBackend::new(path, (1100, 560)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| plot_err(path, e))?;
@@ -151,7 +175,14 @@ pub fn section_contour(path: &Path, title: &str, label: &str, patches: &[Patch],
         .y_label_area_size(55)
         .build_cartesian_2d(x0..x1, z0..z1)
         .map_err(|e| plot_err(path, e))?;
-    chart.configure_mesh().disable_mesh().x_desc("x (m)").y_desc("z (m)").label_style(("sans-serif", 15)).draw().map_err(|e| plot_err(path, e))?;
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .x_desc("x (m)")
+        .y_desc("z (m)")
+        .label_style(("sans-serif", 15))
+        .draw()
+        .map_err(|e| plot_err(path, e))?;
     let t = |v: f64| if v1 > v0 { (v - v0) / (v1 - v0) } else { 0.5 };
     chart
         .draw_series(patches.iter().map(|p| Polygon::new(p.corners.clone(), colormap(t(p.value)).filled())))
@@ -167,7 +198,13 @@ pub fn section_contour(path: &Path, title: &str, label: &str, patches: &[Patch],
         .caption(label, ("sans-serif", 14))
         .build_cartesian_2d(0.0..1.0, v0..v1)
         .map_err(|e| plot_err(path, e))?;
-    cb.configure_mesh().disable_mesh().disable_x_axis().y_label_formatter(&|v| format!("{:.3e}", snap_zero(*v, v1 - v0))).label_style(("sans-serif", 13)).draw().map_err(|e| plot_err(path, e))?;
+    cb.configure_mesh()
+        .disable_mesh()
+        .disable_x_axis()
+        .y_label_formatter(&|v| format!("{:.3e}", snap_zero(*v, v1 - v0)))
+        .label_style(("sans-serif", 13))
+        .draw()
+        .map_err(|e| plot_err(path, e))?;
     let n = 100;
     cb.draw_series((0..n).map(|k| {
         let (a, b) = (v0 + (v1 - v0) * k as f64 / n as f64, v0 + (v1 - v0) * (k + 1) as f64 / n as f64);
@@ -180,7 +217,11 @@ pub fn section_contour(path: &Path, title: &str, label: &str, patches: &[Patch],
 /// A tick within rounding of zero (plotters steps ticks by repeated addition,
 /// so a zero crossing can land on 3e-18) is printed as 0.
 fn snap_zero(v: f64, span: f64) -> f64 {
-    if v.abs() <= 1e-9 * span.abs() { 0.0 } else { v }
+    if v.abs() <= 1e-9 * span.abs() {
+        0.0
+    } else {
+        v
+    }
 }
 
 #[cfg(test)]

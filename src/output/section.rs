@@ -27,7 +27,11 @@ pub fn front_patches(model: &Model, value: impl Fn(usize) -> f64) -> Vec<Patch> 
 }
 
 /// One patch per mesh cell of a continuous mesh (e.g. the FEM's).
-pub fn front_patches_of_cells(coords: &[[f64; 3]], cells: &[crate::mesh::Cell], value: impl Fn(usize) -> f64) -> Vec<Patch> {
+pub fn front_patches_of_cells(
+    coords: &[[f64; 3]],
+    cells: &[crate::mesh::Cell],
+    value: impl Fn(usize) -> f64,
+) -> Vec<Patch> {
     cells
         .iter()
         .enumerate()

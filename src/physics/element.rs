@@ -36,7 +36,8 @@ pub fn tet_gradients(x: [[f64; 3]; 4]) -> ([[f64; 3]; 4], f64) {
     let b = sub(x[2], x[0]);
     let c = sub(x[3], x[0]);
     // Rows of J^-1 (J has columns a, b, c) are the cross products over det.
-    let det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+    let det =
+        a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
     let inv = 1.0 / det;
     let g1 = crate::mesh::shape::cross(b, c).map(|v| v * inv);
     let g2 = crate::mesh::shape::cross(c, a).map(|v| v * inv);
@@ -46,7 +47,11 @@ pub fn tet_gradients(x: [[f64; 3]; 4]) -> ([[f64; 3]; 4], f64) {
 }
 
 /// Builds the element operators of a cell from its corner positions.
-pub fn element_operators(kind: CellKind, corners: &[[f64; 3]], material: &Material) -> Result<ElementOperators, CellDefect> {
+pub fn element_operators(
+    kind: CellKind,
+    corners: &[[f64; 3]],
+    material: &Material,
+) -> Result<ElementOperators, CellDefect> {
     let volume = check_cell(kind, corners)?;
     let dec = Decomposition::of(kind);
     let n = dec.n_corners;

@@ -99,7 +99,14 @@ impl SpringState {
 /// node `a` (`F_n n + F_s`; node `b` gets the opposite). A broken joint that
 /// is open carries nothing: no tension and hence no friction.
 #[inline]
-pub fn spring_contact_force(kn: f64, ks: f64, n: [f64; 3], d: [f64; 3], slip: [f64; 3], status: SpringStatus) -> [f64; 3] {
+pub fn spring_contact_force(
+    kn: f64,
+    ks: f64,
+    n: [f64; 3],
+    d: [f64; 3],
+    slip: [f64; 3],
+    status: SpringStatus,
+) -> [f64; 3] {
     let (f_n, f_s) = spring_force(kn, ks, n, d, slip);
     if status != SpringStatus::Intact && f_n > 0.0 {
         return [0.0; 3];
@@ -175,7 +182,8 @@ pub fn spring_forces(springs: &Springs, state: &SpringState, u: &[f64], f: &mut 
     for s in 0..springs.len() {
         let (a, b) = (springs.a[s] as usize, springs.b[s] as usize);
         let d = relative_displacement(u, a, b);
-        let fa = spring_contact_force(springs.kn[s], springs.ks[s], springs.normal[s], d, state.slip[s], state.status[s]);
+        let fa =
+            spring_contact_force(springs.kn[s], springs.ks[s], springs.normal[s], d, state.slip[s], state.status[s]);
         for i in 0..3 {
             f[3 * a + i] -= fa[i];
             f[3 * b + i] += fa[i];

@@ -141,7 +141,8 @@ pub fn tet_element_force(topo: &TetTopology, b: &[[f64; 9]], lame: Lame, nodes: 
             }
         }
         let tr = h[0][0] + h[1][1] + h[2][2];
-        let (sxx, syy, szz) = (lambda * tr + 2.0 * mu * h[0][0], lambda * tr + 2.0 * mu * h[1][1], lambda * tr + 2.0 * mu * h[2][2]);
+        let (sxx, syy, szz) =
+            (lambda * tr + 2.0 * mu * h[0][0], lambda * tr + 2.0 * mu * h[1][1], lambda * tr + 2.0 * mu * h[2][2]);
         let (syz, sxz, sxy) = (mu * (h[1][2] + h[2][1]), mu * (h[0][2] + h[2][0]), mu * (h[0][1] + h[1][0]));
         for (k, &p) in t.iter().enumerate() {
             let (bx, by, bz) = (b[3 * k], b[3 * k + 1], b[3 * k + 2]);
@@ -270,6 +271,8 @@ impl TetOperators {
 
     /// Bytes of the per-tetrahedron data (`b`, offsets, Lamé parameters).
     pub fn bytes(&self) -> usize {
-        std::mem::size_of_val(&self.b[..]) + std::mem::size_of_val(&self.offset[..]) + std::mem::size_of_val(&self.lame[..])
+        std::mem::size_of_val(&self.b[..])
+            + std::mem::size_of_val(&self.offset[..])
+            + std::mem::size_of_val(&self.lame[..])
     }
 }

@@ -24,12 +24,18 @@ fn stiffness_given(key: &str, e: Option<f64>, g: Option<f64>, l: Option<f64>) ->
 fn strength(key: &str, st: &super::StrengthSection) -> Result<(), SceneError> {
     for (name, v) in [("tensile", st.tensile), ("cohesion", st.cohesion)] {
         if !(v.is_finite() && v >= 0.0) {
-            return Err(SceneError::invalid(format!("{key}.strength.{name}"), format!("must be finite and >= 0, got {v}")));
+            return Err(SceneError::invalid(
+                format!("{key}.strength.{name}"),
+                format!("must be finite and >= 0, got {v}"),
+            ));
         }
     }
     let phi = st.friction_angle;
     if !(phi.is_finite() && (0.0..90.0).contains(&phi)) {
-        return Err(SceneError::invalid(format!("{key}.strength.friction_angle"), format!("must be in [0, 90) degrees, got {phi}")));
+        return Err(SceneError::invalid(
+            format!("{key}.strength.friction_angle"),
+            format!("must be in [0, 90) degrees, got {phi}"),
+        ));
     }
     Ok(())
 }
@@ -68,7 +74,10 @@ pub(super) fn validate(s: &Scene) -> Result<(), SceneError> {
         if let Some(st) = &f.strength {
             strength(&format!("interface[{i}]"), st)?;
             if f.mode == JointMode::Merged {
-                return Err(SceneError::invalid(format!("interface[{i}].strength"), "a merged interface has no springs to break"));
+                return Err(SceneError::invalid(
+                    format!("interface[{i}].strength"),
+                    "a merged interface has no springs to break",
+                ));
             }
         }
         if f.mode == JointMode::Springs {

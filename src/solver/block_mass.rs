@@ -70,7 +70,8 @@ impl BlockMass {
         }
         let cluster: Vec<u32> = model.mesh_node.clone();
         let size = |c: usize| 3 * (ptr[c + 1] - ptr[c]) as usize;
-        let size_of_cluster = |i: usize| (ptr[model.mesh_node[i] as usize + 1] - ptr[model.mesh_node[i] as usize]) as usize;
+        let size_of_cluster =
+            |i: usize| (ptr[model.mesh_node[i] as usize + 1] - ptr[model.mesh_node[i] as usize]) as usize;
         let mut blocks: Vec<DMatrix<f64>> = (0..n_mesh).map(|c| DMatrix::zeros(size(c), size(c))).collect();
         let mut off = vec![0.0; 3 * n_nodes];
         // Adds the 3x3 block `k(a, b)` of K between nodes i and j.
@@ -152,7 +153,9 @@ impl BlockMass {
             slot_of[i as usize] = slot;
         }
         row.extend((0..n_nodes).map(|i| row_of_slot[slot_of[i]]));
-        let diagonal = (0..n_nodes).map(|i| [0, 1, 2].map(|a| mass[row[i] + a * 3 * size_of_cluster(i) + 3 * local[i] + a])).collect();
+        let diagonal = (0..n_nodes)
+            .map(|i| [0, 1, 2].map(|a| mass[row[i] + a * 3 * size_of_cluster(i) + 3 * local[i] + a]))
+            .collect();
         let slot_of = slot_of.iter().map(|&s| s as u32).collect();
         Ok(Self { ptr, nodes, cluster, slot_of, row, mass, inverse, diagonal })
     }

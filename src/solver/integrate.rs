@@ -61,10 +61,15 @@ pub const CHUNK: usize = 3 * 1024;
 /// does not depend on the number of threads.
 pub fn integrate(inp: &UpdateInput, u: &mut [f64], v: &mut [f64], partial: &mut [UpdateReport]) -> UpdateReport {
     use rayon::prelude::*;
-    u.par_chunks_mut(CHUNK).zip(v.par_chunks_mut(CHUNK)).zip(partial.par_iter_mut()).enumerate().for_each(|(c, ((u, v), rep))| {
-        *rep = integrate_range(inp, c * CHUNK, u, v);
-    });
-    partial.iter().fold(UpdateReport::default(), |a, b| UpdateReport { max_unbalanced: a.max_unbalanced.max(b.max_unbalanced), kinetic: a.kinetic + b.kinetic })
+    u.par_chunks_mut(CHUNK).zip(v.par_chunks_mut(CHUNK)).zip(partial.par_iter_mut()).enumerate().for_each(
+        |(c, ((u, v), rep))| {
+            *rep = integrate_range(inp, c * CHUNK, u, v);
+        },
+    );
+    partial.iter().fold(UpdateReport::default(), |a, b| UpdateReport {
+        max_unbalanced: a.max_unbalanced.max(b.max_unbalanced),
+        kinetic: a.kinetic + b.kinetic,
+    })
 }
 
 /// The update of the nodes `first / 3..(first + u.len()) / 3`.

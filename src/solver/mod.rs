@@ -17,8 +17,8 @@ use serde::Serialize;
 
 use crate::error::SolveError;
 use crate::model::Model;
-use crate::physics::damping::{rayleigh_omega2, rayleigh_omega2_with};
 use crate::model::ELEMENT_SLOT;
+use crate::physics::damping::{rayleigh_omega2, rayleigh_omega2_with};
 use crate::physics::spring::SpringState;
 use block_mass::BlockMass;
 use integrate::{integrate, Masses, UpdateInput};
@@ -111,7 +111,8 @@ impl Solver {
             true => Some(BlockMass::new(model, amplification / (4.0 * params.safety * params.safety))?),
             false => None,
         };
-        let f_ext_max = model.f_ext.iter().zip(&model.fixed).filter(|(_, &fx)| !fx).map(|(f, _)| f.abs()).fold(0.0, f64::max);
+        let f_ext_max =
+            model.f_ext.iter().zip(&model.fixed).filter(|(_, &fx)| !fx).map(|(f, _)| f.abs()).fold(0.0, f64::max);
         Ok(Self {
             params,
             mass,
@@ -165,7 +166,11 @@ impl Solver {
         self.update_damping(state);
         if let Some(b) = &self.block {
             let (fixed, f_ext, f_int) = (&model.fixed, &model.f_ext, &state.f_int);
-            b.accelerations(|k| integrate::unbalanced(fixed, f_ext, f_int, k), &mut self.slot_force, &mut self.slot_acc);
+            b.accelerations(
+                |k| integrate::unbalanced(fixed, f_ext, f_int, k),
+                &mut self.slot_force,
+                &mut self.slot_acc,
+            );
         }
         let inp = UpdateInput {
             mass: match &self.block {
@@ -302,7 +307,8 @@ impl Solver {
     }
 
     fn history_row(&self, model: &Model, state: &State, kinetic: f64, ratio: f64) -> HistoryRow {
-        let max_displacement = state.u.chunks(3).map(|d| (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()).fold(0.0, f64::max);
+        let max_displacement =
+            state.u.chunks(3).map(|d| (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()).fold(0.0, f64::max);
         HistoryRow {
             step: state.step,
             time: state.time,

@@ -50,7 +50,13 @@ pub fn stiffness_row_sums(model: &Model) -> Vec<f64> {
 /// local damping adds `alpha |f|` along `f` when a node decelerates, so it is
 /// `1 + alpha` (without it a spring chain, whose largest eigenvalue equals the
 /// Gershgorin bound, blows up); 1 for viscous and kinetic damping.
-pub fn masses_and_step(model: &Model, rows: &[f64], safety: f64, mass_scaling: bool, amplification: f64) -> Option<(Vec<f64>, f64)> {
+pub fn masses_and_step(
+    model: &Model,
+    rows: &[f64],
+    safety: f64,
+    mass_scaling: bool,
+    amplification: f64,
+) -> Option<(Vec<f64>, f64)> {
     if mass_scaling {
         let scale = amplification / (4.0 * safety * safety);
         let m: Vec<f64> = rows.iter().zip(&model.mass).map(|(&r, &m)| if r > 0.0 { scale * r } else { m }).collect();
