@@ -85,7 +85,7 @@ fn bench(c: &mut Criterion) {
         let model = slope_model(&mesh);
         let n_el = model.elements.len();
         assert_eq!(n_el, n_hex, "{}: expected {n_hex} hexahedra", mesh.display());
-        let ops = TetOperators::of_model(&model).expect("slope cells are valid");
+        let ops = model.tet_operators().expect("slope cells are valid");
         eprintln!(
             "hex_{n_el}: K_e {:.1} MiB, per-tet {:.1} MiB",
             (model.elements.k.len() * 8) as f64 / (1 << 20) as f64,

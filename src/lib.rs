@@ -4,34 +4,45 @@
 //! for a hexahedron); neighbouring elements own separate copies of their shared
 //! nodes, joined by normal and shear springs; the static state is found by
 //! explicit dynamic relaxation. After Liu, Li & Liu (2014), restated in
-//! `DESIGN.md`.
+//! `docs/method.md`.
 //!
-//! The pipeline: [`mesh::gmsh::read_msh`] -> [`scene::Scene::load`] ->
+//! The pipeline: [`scene::Scene::load`] -> [`mesh::gmsh::read_msh`] ->
 //! [`model::build`] (perturbation, node copies, element operators, springs) ->
-//! [`solver::Solver::relax`] -> [`output`].
+//! [`solver::relax`] (phase 1, then phase 2 for a scene with `[failure]`),
+//! driven by [`drivers::run_scene`] -> [`output::write_run`].
 //!
 //! ```no_run
 //! let scene = cdem::scene::Scene::load("verification/cases/column/column.toml".as_ref())?;
-//! let result = cdem::run::run_scene(&scene, &mut |_, _| {})?;
+//! let result = cdem::drivers::run_scene(&scene, &mut |_, _| {})?;
 //! println!("top displacement {:.4e} m", result.summary.min_uz);
 //! # Ok::<(), cdem::Error>(())
 //! ```
 
-pub mod analysis;
+// The layers, bottom up; a module imports only from layers below its own
+// (tests/layering.rs checks it):
+//   error, summary -> mesh -> physics -> model -> solver | fem | lem | analysis
+//   -> scene -> drivers -> output -> harness (feature `harness`) -> the CLI.
 pub mod error;
+pub mod summary;
+
+pub mod mesh;
+pub mod physics;
+
+pub mod model;
+
+pub mod analysis;
 pub mod fem;
 pub mod lem;
-pub mod mesh;
-pub mod model;
-pub mod output;
-pub mod perf;
-pub mod physics;
-pub mod progressive;
-pub mod reproduce;
-pub mod run;
-pub mod scene;
 pub mod solver;
-pub mod study;
-pub mod validation;
+
+pub mod scene;
+
+pub mod drivers;
+
+pub mod output;
+
+#[cfg(feature = "harness")]
+pub mod harness;
 
 pub use error::{Error, MeshError, ModelError, Result, SceneError, SolveError};
+pub use summary::{EndState, Summary};

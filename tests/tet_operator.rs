@@ -94,7 +94,7 @@ fn per_tet_pass_equals_condensed_pass_on_the_paper_slope() {
     let scene = Scene::load(&path).unwrap();
     let model = cdem::run::build_model(&scene).unwrap();
     let el = &model.elements;
-    let ops = TetOperators::of_model(&model).unwrap();
+    let ops = model.tet_operators().unwrap();
     let u: Vec<f64> = (0..3 * model.n_nodes()).map(|k| 1e-3 * (0.37 * k as f64).sin()).collect();
     let mut f_k = vec![0.0; ELEMENT_SLOT * el.len()];
     forces::element_forces(&model, &u, &mut f_k);

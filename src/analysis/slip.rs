@@ -22,8 +22,7 @@ use super::safety::{traction_from_stress, SurfacePoint};
 use crate::mesh::adjacency::{face_key, face_nodes, polygon_normal_area, FaceAdjacency};
 use crate::mesh::Mesh;
 use crate::model::Model;
-use crate::physics::spring::{relative_displacement, spring_contact_force};
-use crate::solver::State;
+use crate::physics::spring::{relative_displacement, spring_contact_force, SpringState};
 
 /// A circular slip surface in the x-z section.
 #[derive(Debug, Clone, Copy)]
@@ -101,14 +100,21 @@ pub fn from_stresses(
 
 /// Traction at the slip springs of a CDEM state (interface named `group`),
 /// merged into stations.
-pub fn from_springs(model: &Model, state: &State, group: &str, circle: &SlipCircle) -> Option<Vec<SurfacePoint>> {
-    Some(stations(spring_points(model, state, group, circle)?.into_iter().map(|(_, p)| p).collect()))
+pub fn from_springs(
+    model: &Model,
+    u: &[f64],
+    springs: &SpringState,
+    group: &str,
+    circle: &SlipCircle,
+) -> Option<Vec<SurfacePoint>> {
+    Some(stations(spring_points(model, u, springs, group, circle)?.into_iter().map(|(_, p)| p).collect()))
 }
 
 /// Traction at each spring of the slip interface, with the spring's index.
 pub fn spring_points(
     model: &Model,
-    state: &State,
+    u: &[f64],
+    springs: &SpringState,
     group: &str,
     circle: &SlipCircle,
 ) -> Option<Vec<(usize, SurfacePoint)>> {
@@ -117,9 +123,9 @@ pub fn spring_points(
     let mut pts = Vec::new();
     for k in (0..sp.len()).filter(|&k| sp.interface[k] == iface) {
         let (a, b) = (sp.a[k] as usize, sp.b[k] as usize);
-        let d = relative_displacement(&state.u, a, b);
+        let d = relative_displacement(u, a, b);
         let f_on_a =
-            spring_contact_force(sp.kn[k], sp.ks[k], sp.normal[k], d, state.springs.slip[k], state.springs.status[k]);
+            spring_contact_force(sp.kn[k], sp.ks[k], sp.normal[k], d, springs.slip[k], springs.status[k]);
         let (s, n, t) = circle.frame(model.x0[a]);
         // The spring normal points from a's element into b's: if it points out
         // of the mass, a is on the mass side and feels the ground's force.

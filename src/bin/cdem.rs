@@ -1,6 +1,7 @@
 //! The `cdem` command line. The only place errors become text and exit codes.
 
-use std::path::PathBuf;
+use std::io::Write;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
@@ -88,17 +89,17 @@ fn main() -> ExitCode {
             cdem::mesh::gmsh::regenerate(&geo, &out).map(|_| eprintln!("wrote {}", out.display()))
         }
         Command::Fem { scene, out } => fem(&scene, &out),
-        Command::Lem { input, out } => cdem::lem::run_file(&input, out.as_deref()).map(|_| ()),
-        Command::Study { out } => cdem::study::run_study(&out, &mut |what| eprintln!("study: {what}")).map(|rows| {
+        Command::Lem { input, out } => lem(&input, out.as_deref()),
+        Command::Study { out } => cdem::harness::study::run_study(&out, &mut |what| eprintln!("study: {what}")).map(|rows| {
             eprintln!("study: {} points -> {}", rows.len(), out.join("study.csv").display());
         }),
         Command::Perf { out, refine, no_damping } => {
-            let opts = cdem::perf::PerfOptions { damping: !no_damping, refine, ..Default::default() };
-            cdem::perf::run_perf(std::path::Path::new("."), &out, &opts, &mut |what| eprintln!("perf: {what}"))
+            let opts = cdem::harness::perf::PerfOptions { damping: !no_damping, refine, ..Default::default() };
+            cdem::harness::perf::run_perf(Path::new("."), &out, &opts, &mut |what| eprintln!("perf: {what}"))
                 .map(|md| println!("{md}"))
         }
         Command::Reproduce { out, regenerate } => {
-            cdem::reproduce::reproduce(&out, regenerate, &mut |what| eprintln!("reproduce: {what}"))
+            cdem::harness::reproduce::reproduce(&out, regenerate, &mut |what| eprintln!("reproduce: {what}"))
         }
     };
     match result {
@@ -110,36 +111,54 @@ fn main() -> ExitCode {
     }
 }
 
-fn run(scene_path: &std::path::Path, out: &std::path::Path) -> cdem::Result<()> {
+/// `cdem run`: phase 1 and, for a scene with `[failure]`, phase 2.
+fn run(scene_path: &Path, out: &Path) -> cdem::Result<()> {
     let scene = Scene::load(scene_path)?;
-    if let Some(params) = &scene.failure {
-        return run_progressive(&scene, params, out);
-    }
-    let pb = progress_bar(scene.solver.max_steps);
-    let result = cdem::run::run_scene(&scene, &mut |step, ratio| {
+    let budget = scene.solver.max_steps + scene.failure.as_ref().map_or(0, |f| f.max_steps);
+    let pb = progress_bar(budget);
+    let result = cdem::drivers::run_scene(&scene, &mut |step, ratio| {
         pb.set_position(step as u64);
         pb.set_message(format!("unbalanced ratio {ratio:.2e}"));
     })?;
     pb.finish_and_clear();
-    cdem::run::write_outputs(&scene, &result, out)?;
+    cdem::output::write_run(&scene, &result, out)?;
     let s = &result.summary;
-    println!(
-        "{} after {} steps ({:.2} s): ratio {:.2e}, min u_z {:.4e} m, min sigma_zz {} Pa -> {}",
-        if s.converged { "converged" } else { "NOT converged" },
-        s.steps,
-        s.wall_s,
-        s.unbalanced_ratio,
-        s.min_uz,
-        s.min_szz.map_or("-".into(), |v| format!("{v:.4e}")),
-        out.display()
-    );
+    let p1 = s.phase1.as_ref().expect("a CDEM run has phase 1");
+    match &s.phase2 {
+        None => println!(
+            "{} after {} steps ({:.2} s): ratio {:.2e}, min u_z {:.4e} m, min sigma_zz {} Pa -> {}",
+            if s.converged { "converged" } else { "NOT converged" },
+            s.steps,
+            s.wall_s,
+            s.unbalanced_ratio,
+            s.min_uz,
+            s.min_szz.map_or("-".into(), |v| format!("{v:.4e}")),
+            out.display()
+        ),
+        Some(p2) => println!(
+            "phase 1: {:?} after {} steps (ratio {:.2e}); phase 2: {:?} after {} steps (ratio {:.2e}), \
+             failed springs {} (tension) {} (shear), max displacement since phase 1 {:.3e} m ({:.2} s) -> {}",
+            p1.end_state,
+            p1.steps,
+            p1.unbalanced_ratio,
+            p2.end_state,
+            p2.steps,
+            p2.unbalanced_ratio,
+            p2.failed_springs.tension,
+            p2.failed_springs.shear,
+            p2.max_displacement,
+            s.wall_s,
+            out.display()
+        ),
+    }
     Ok(())
 }
 
-fn fem(scene_path: &std::path::Path, out: &std::path::Path) -> cdem::Result<()> {
+/// `cdem fem`: the implicit FEM reference on the continuous mesh.
+fn fem(scene_path: &Path, out: &Path) -> cdem::Result<()> {
     let scene = Scene::load(scene_path)?;
-    let sol = cdem::fem::solve_scene(&scene)?;
-    cdem::fem::write_outputs(&sol, out)?;
+    let sol = cdem::drivers::solve_fem(&scene)?;
+    cdem::output::write_fem(&sol, out)?;
     let s = &sol.summary;
     println!(
         "FEM solved {} unknowns ({:.2} s): residual {:.2e}, min u_z {:.4e} m, min sigma_zz {} Pa -> {}",
@@ -153,43 +172,13 @@ fn fem(scene_path: &std::path::Path, out: &std::path::Path) -> cdem::Result<()> 
     Ok(())
 }
 
-/// A scene with `[failure]`: phase 1 (elastic) then phase 2 (breakable joints).
-fn run_progressive(
-    scene: &Scene,
-    params: &cdem::progressive::FailureParams,
-    out: &std::path::Path,
-) -> cdem::Result<()> {
-    let t0 = std::time::Instant::now();
-    let pb = progress_bar(scene.solver.max_steps + params.max_steps);
-    let r = cdem::progressive::run_progressive(scene, params, &mut |step, ratio| {
-        pb.set_position(step as u64);
-        pb.set_message(format!("unbalanced ratio {ratio:.2e}"));
-    })?;
-    pb.finish_and_clear();
-    let stress = scene.output.stress.then(|| r.model.element_stresses(&r.state.u));
-    let converged = r.end == cdem::progressive::EndState::Equilibrium;
-    let report = cdem::solver::RunReport { converged, steps: r.elastic.steps + r.phase2_steps, ..r.elastic.clone() };
-    let summary = cdem::run::summarize(&r.model, &r.state, &report, stress.as_deref(), t0.elapsed().as_secs_f64());
-    let result = cdem::run::RunResult {
-        model: r.model.clone(),
-        state: r.state.clone(),
-        report,
-        stress,
-        frames: Vec::new(),
-        summary,
-    };
-    cdem::run::write_outputs(scene, &result, out)?;
-    cdem::progressive::write_outputs(&r, out, scene.output.vtk)?;
-    let last = r.stages.last();
-    println!(
-        "phase 1: {} steps; phase 2: {:?} after {} steps, failed springs {} (tension) {} (shear), max displacement since phase 1 {:.3e} m -> {}",
-        r.elastic.steps,
-        r.end,
-        r.phase2_steps,
-        last.map_or(0, |s| s.failed_tension),
-        last.map_or(0, |s| s.failed_shear),
-        last.map_or(0.0, |s| s.max_displacement),
-        out.display()
-    );
+/// `cdem lem`: runs a LEM input, prints a short table and writes the JSON
+/// (to `out`, or beside the input with extension `.json`).
+fn lem(input: &Path, out: Option<&Path>) -> cdem::Result<()> {
+    let result = cdem::lem::analyse(&cdem::lem::LemInput::load(input)?)?;
+    let out = out.map(Path::to_path_buf).unwrap_or_else(|| input.with_extension("json"));
+    cdem::output::write_json(&out, &result)?;
+    // A closed stdout (e.g. `| head`) is not an error of the analysis.
+    let _ = writeln!(std::io::stdout().lock(), "{}wrote {}", cdem::lem::table(&result), out.display());
     Ok(())
 }

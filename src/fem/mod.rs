@@ -20,26 +20,23 @@
 //! eliminated, and `K_ff u_f = f_f` is solved by sparse Cholesky (see
 //! [`solve`](mod@solve)).
 //!
-//! Outputs mirror `cdem run`: `summary.json` (the same keys as
-//! [`crate::run::Summary`]: `steps = 1`, `dt = 0`, `unbalanced_ratio` the
+//! Outputs mirror `cdem run` (written by `output::fem`): `summary.json` (the same keys as
+//! [`crate::summary::Summary`]: `steps = 1`, `dt = 0`, `unbalanced_ratio` the
 //! relative residual `|K u - f|_2 / |f|_2` over the free components, `springs =
 //! 0`) and `final.vtu` + `run.pvd` (points the mesh nodes, perturbed).
 
 pub mod element;
-pub mod output;
 pub mod problem;
 pub mod solve;
 
 use std::time::Instant;
 
-pub use output::write_outputs;
 pub use problem::FemProblem;
 pub use solve::Timings;
 
 use crate::error::{Error, SolveError};
 use crate::mesh::Cell;
-use crate::run::{FailedSprings, Summary};
-use crate::scene::Scene;
+use crate::summary::{EndState, FailedSprings, FieldExtremes, Summary};
 
 /// Relative residual below which the direct solve is reported as converged.
 pub const CONVERGED_RESIDUAL: f64 = 1e-8;
@@ -68,15 +65,6 @@ pub struct FemSolution {
     pub summary: Summary,
 }
 
-/// Reads the scene's mesh, perturbs it as CDEM does, and solves.
-pub fn solve_scene(scene: &Scene) -> crate::Result<FemSolution> {
-    let t0 = Instant::now();
-    let problem = FemProblem::from_scene(scene)?;
-    let mut sol = solve(&problem)?;
-    sol.summary.wall_s = t0.elapsed().as_secs_f64();
-    Ok(sol)
-}
-
 /// Solves a problem: assembly, Cholesky, residual, element stresses, summary.
 pub fn solve(p: &FemProblem) -> crate::Result<FemSolution> {
     let t0 = Instant::now();
@@ -97,21 +85,25 @@ pub fn solve(p: &FemProblem) -> crate::Result<FemSolution> {
     }
     let mut timings = s.timings;
     timings.post_s += t1.elapsed().as_secs_f64();
-    let uz = s.u.chunks(3).map(|d| d[2]);
+    let field = FieldExtremes::of(&s.u, Some(&stress));
+    let converged = s.residual_ratio < CONVERGED_RESIDUAL;
     let summary = Summary {
-        converged: s.residual_ratio < CONVERGED_RESIDUAL,
+        end_state: if converged { EndState::Equilibrium } else { EndState::Undecided },
+        converged,
         steps: 1,
         wall_s: t0.elapsed().as_secs_f64(),
         dt: 0.0,
         unbalanced_ratio: s.residual_ratio,
-        max_abs_uz: uz.clone().map(f64::abs).fold(0.0, f64::max),
-        min_uz: uz.fold(0.0, f64::min),
-        max_abs_u: s.u.chunks(3).map(|d| (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()).fold(0.0, f64::max),
-        min_szz: Some(stress.iter().map(|x| x[2]).fold(f64::INFINITY, f64::min)),
+        max_abs_uz: field.max_abs_uz,
+        min_uz: field.min_uz,
+        max_abs_u: field.max_abs_u,
+        min_szz: field.min_szz,
         failed_springs: FailedSprings::default(),
         elements: p.cells.len(),
         nodes: p.n_nodes(),
         springs: 0,
+        phase1: None,
+        phase2: None,
     };
     Ok(FemSolution {
         coords: p.coords.clone(),

@@ -1,13 +1,12 @@
-//! The FEM problem of a scene: the continuous mesh (shared nodes, every
+//! The FEM problem of a mesh and its model spec: the continuous mesh (shared nodes, every
 //! interface merged, no springs), perturbed exactly as CDEM perturbs it,
 //! materials per cell, fixed components and gravity.
 
 use crate::error::Error;
 use crate::mesh::adjacency::FaceAdjacency;
 use crate::mesh::{Cell, Mesh};
-use crate::model::{cell_materials, fixed_mesh_nodes, perturbed_coordinates, scene_materials};
+use crate::model::{cell_materials, fixed_mesh_nodes, perturbed_coordinates, spec_materials, ModelSpec};
 use crate::physics::material::Material;
-use crate::scene::Scene;
 
 /// A linear elastostatic problem on a continuous mesh.
 #[derive(Debug, Clone)]
@@ -29,28 +28,22 @@ pub struct FemProblem {
 }
 
 impl FemProblem {
-    /// Reads the scene's mesh and builds the problem.
-    pub fn from_scene(scene: &Scene) -> Result<Self, Error> {
-        let mesh = crate::mesh::gmsh::read_msh(&scene.mesh_path())?;
-        Self::from_mesh(&mesh, scene)
-    }
-
-    /// Builds the problem of a scene on a given mesh: 1. perturb the nodes
+    /// Builds the problem of a model spec on a given mesh: 1. perturb the nodes
     /// (same call, seed and flat groups as `model::build`, so the coordinates
     /// are CDEM's bit for bit), 2. materials, 3. fixities.
-    pub fn from_mesh(mesh: &Mesh, scene: &Scene) -> Result<Self, Error> {
+    pub fn from_mesh(mesh: &Mesh, spec: &ModelSpec) -> Result<Self, Error> {
         let adj = FaceAdjacency::build(mesh)?;
-        let coords = perturbed_coordinates(mesh, scene, &adj)?;
-        let cell_material = cell_materials(mesh, scene)?;
-        let materials = scene_materials(scene);
-        let fixed = fixed_mesh_nodes(mesh, scene)?;
+        let coords = perturbed_coordinates(mesh, spec, &adj)?;
+        let cell_material = cell_materials(mesh, spec)?;
+        let materials = spec_materials(spec);
+        let fixed = fixed_mesh_nodes(mesh, spec)?;
         Ok(Self {
             prescribed: vec![0.0; fixed.len()],
             coords,
             cells: mesh.cells.clone(),
             cell_material,
             materials,
-            gravity: scene.loads.gravity,
+            gravity: spec.gravity,
             fixed,
         })
     }

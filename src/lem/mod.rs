@@ -53,8 +53,6 @@ mod methods;
 mod search;
 mod section;
 
-use std::io::Write;
-use std::path::Path;
 use std::time::Instant;
 
 use serde::Serialize;
@@ -209,19 +207,6 @@ fn single_circle(input: &LemInput, circle: Circle) -> Result<LemResult, crate::E
             }),
         );
     }
-    Ok(result)
-}
-
-/// Reads a LEM TOML file, runs it, prints a short table and writes the JSON
-/// (to `out`, or beside the input with extension `.json`).
-pub fn run_file(path: &Path, out: Option<&Path>) -> crate::Result<LemResult> {
-    let input = LemInput::load(path)?;
-    let result = analyse(&input)?;
-    let out = out.map(Path::to_path_buf).unwrap_or_else(|| path.with_extension("json"));
-    let text = serde_json::to_string_pretty(&result).expect("LEM result serialises");
-    crate::output::write_atomic(&out, text.as_bytes())?;
-    // A closed stdout (e.g. `| head`) is not an error of the analysis.
-    let _ = writeln!(std::io::stdout().lock(), "{}wrote {}", table(&result), out.display());
     Ok(result)
 }
 

@@ -1,4 +1,4 @@
-//! Building a [`Model`] from a mesh and a scene, in named stages.
+//! Building a [`Model`] from a mesh and its [`ModelSpec`], in named stages.
 
 use std::collections::HashMap;
 
@@ -11,15 +11,15 @@ use crate::mesh::Mesh;
 use crate::physics::element::element_operators;
 use crate::physics::material::{Material, YoungPoisson};
 use crate::physics::spring::{spring_stiffness, Springs};
-use crate::scene::{JointMode, Scene};
+use super::spec::{JointMode, ModelSpec};
 
 /// Builds the model: 1. perturb nodes, 2. classify interfaces, 3. make node
 /// copies (merging across merged interfaces), 4. element operators and masses,
 /// 5. springs on the other interfaces, 6. constraints, 7. gravity.
-pub fn build(mesh: &Mesh, scene: &Scene) -> Result<Model, Error> {
+pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
     let adj = FaceAdjacency::build(mesh)?;
-    let coords = perturbed_coordinates(mesh, scene, &adj)?;
-    let (interfaces, face_interface) = classify_interfaces(mesh, scene)?;
+    let coords = perturbed_coordinates(mesh, spec, &adj)?;
+    let (interfaces, face_interface) = classify_interfaces(mesh, spec)?;
     let interface_of = |key: &FaceKey| face_interface.get(key).copied().unwrap_or(0);
 
     // 3. Node copies: one per (cell, corner) slot, merged across merged faces.
@@ -59,8 +59,8 @@ pub fn build(mesh: &Mesh, scene: &Scene) -> Result<Model, Error> {
     let x0: Vec<[f64; 3]> = mesh_node.iter().map(|&n| coords[n as usize]).collect();
 
     // 4. Elements.
-    let materials_of_cell = cell_materials(mesh, scene)?;
-    let materials = scene_materials(scene);
+    let materials_of_cell = cell_materials(mesh, spec)?;
+    let materials = spec_materials(spec);
     let mut el = Elements::default();
     let mut mass = vec![0.0; n_nodes];
     el.offset.push(0);
@@ -89,14 +89,14 @@ pub fn build(mesh: &Mesh, scene: &Scene) -> Result<Model, Error> {
 
     // 5. Springs on every shared face that is not merged.
     let springs =
-        make_springs(mesh, scene, &adj, &coords, &interfaces, &face_interface, |c, n| node_of_slot[slot(c, n)]);
+        make_springs(mesh, spec, &adj, &coords, &interfaces, &face_interface, |c, n| node_of_slot[slot(c, n)]);
 
     // 6. Constraints: every copy of a fixed mesh node is fixed.
-    let mesh_fixed = fixed_mesh_nodes(mesh, scene)?;
+    let mesh_fixed = fixed_mesh_nodes(mesh, spec)?;
     let fixed = (0..3 * n_nodes).map(|k| mesh_fixed[3 * mesh_node[k / 3] as usize + k % 3]).collect();
 
     // 7. Gravity.
-    let g = scene.loads.gravity;
+    let g = spec.gravity;
     let f_ext = (0..3 * n_nodes).map(|k| mass[k / 3] * g[k % 3]).collect();
 
     let gather = Gather::build(&el, &springs, n_nodes);
@@ -116,8 +116,8 @@ pub fn build(mesh: &Mesh, scene: &Scene) -> Result<Model, Error> {
 }
 
 /// The scene's `[[material]]` sections as materials (in scene order).
-pub(crate) fn scene_materials(scene: &Scene) -> Vec<Material> {
-    scene
+pub fn spec_materials(spec: &ModelSpec) -> Vec<Material> {
+    spec
         .material
         .iter()
         .map(|m| Material {
@@ -128,9 +128,9 @@ pub(crate) fn scene_materials(scene: &Scene) -> Vec<Material> {
 }
 
 /// Fixed components of the mesh nodes (`3 n + d`) from the scene's `[[boundary]]` groups.
-pub(crate) fn fixed_mesh_nodes(mesh: &Mesh, scene: &Scene) -> Result<Vec<bool>, Error> {
+pub fn fixed_mesh_nodes(mesh: &Mesh, spec: &ModelSpec) -> Result<Vec<bool>, Error> {
     let mut fixed = vec![false; 3 * mesh.nodes.len()];
-    for (b, bc) in scene.boundary.iter().enumerate() {
+    for (b, bc) in spec.boundary.iter().enumerate() {
         let g = mesh
             .groups
             .iter()
@@ -145,14 +145,14 @@ pub(crate) fn fixed_mesh_nodes(mesh: &Mesh, scene: &Scene) -> Result<Vec<bool>, 
     Ok(fixed)
 }
 
-pub(crate) fn unknown_group(key: String, group: &str, what: &str) -> Error {
+pub fn unknown_group(key: String, group: &str, what: &str) -> Error {
     ModelError::UnknownGroup { key, group: group.to_string(), what: what.to_string() }.into()
 }
 
 /// The scene's node perturbation (shared with the FEM, so both see the same
 /// coordinates); an inversion names the gmsh element.
-pub(crate) fn perturbed_coordinates(mesh: &Mesh, scene: &Scene, adj: &FaceAdjacency) -> Result<Vec<[f64; 3]>, Error> {
-    let p = &scene.perturbation;
+pub fn perturbed_coordinates(mesh: &Mesh, spec: &ModelSpec, adj: &FaceAdjacency) -> Result<Vec<[f64; 3]>, Error> {
+    let p = &spec.perturbation;
     let mut flat = Vec::new();
     for (i, name) in p.keep_flat.iter().enumerate() {
         let g = mesh
@@ -171,14 +171,14 @@ pub(crate) fn perturbed_coordinates(mesh: &Mesh, scene: &Scene, adj: &FaceAdjace
 }
 
 /// Interface 0 is `[joints]`; each `[[interface]]` maps its facets' keys to its index.
-fn classify_interfaces(mesh: &Mesh, scene: &Scene) -> Result<(Vec<Interface>, HashMap<FaceKey, usize>), Error> {
+fn classify_interfaces(mesh: &Mesh, spec: &ModelSpec) -> Result<(Vec<Interface>, HashMap<FaceKey, usize>), Error> {
     let mut interfaces = vec![Interface {
         name: "joints".into(),
-        mode: scene.joints.mode,
-        strength: scene.joints.strength.map(Into::into),
+        mode: spec.joints.mode,
+        strength: spec.joints.strength.map(Into::into),
     }];
     let mut map = HashMap::new();
-    for (i, s) in scene.interface.iter().enumerate() {
+    for (i, s) in spec.interface.iter().enumerate() {
         let g = mesh
             .groups
             .iter()
@@ -193,9 +193,9 @@ fn classify_interfaces(mesh: &Mesh, scene: &Scene) -> Result<(Vec<Interface>, Ha
 }
 
 /// Material index of every cell from the scene's `[[material]]` volume groups.
-pub(crate) fn cell_materials(mesh: &Mesh, scene: &Scene) -> Result<Vec<u16>, Error> {
+pub fn cell_materials(mesh: &Mesh, spec: &ModelSpec) -> Result<Vec<u16>, Error> {
     let mut mat = vec![u16::MAX; mesh.cells.len()];
-    for (i, m) in scene.material.iter().enumerate() {
+    for (i, m) in spec.material.iter().enumerate() {
         let g = mesh
             .groups
             .iter()
@@ -217,7 +217,7 @@ pub(crate) fn cell_materials(mesh: &Mesh, scene: &Scene) -> Result<Vec<u16>, Err
 /// the first cell.
 fn make_springs(
     mesh: &Mesh,
-    scene: &Scene,
+    spec: &ModelSpec,
     adj: &FaceAdjacency,
     coords: &[[f64; 3]],
     interfaces: &[Interface],
@@ -231,7 +231,7 @@ fn make_springs(
         if interfaces[iface].mode == JointMode::Merged {
             continue;
         }
-        let (e_j, g_j, l) = joint_moduli(scene, iface);
+        let (e_j, g_j, l) = joint_moduli(spec, iface);
         let p: Vec<[f64; 3]> = nodes.iter().map(|&n| coords[n]).collect();
         let m = p.len() as f64;
         let f = [0, 1, 2].map(|d| p.iter().map(|x| x[d]).sum::<f64>() / m);
@@ -260,12 +260,12 @@ fn make_springs(
 }
 
 /// `(E_j, G_j, L)` of an interface, falling back to `[joints]` (validated).
-fn joint_moduli(scene: &Scene, iface: usize) -> (f64, f64, f64) {
-    let j = &scene.joints;
+fn joint_moduli(spec: &ModelSpec, iface: usize) -> (f64, f64, f64) {
+    let j = &spec.joints;
     let (e, g, l) = match iface {
         0 => (j.normal_modulus, j.shear_modulus, j.thickness),
         i => {
-            let s = &scene.interface[i - 1];
+            let s = &spec.interface[i - 1];
             (s.normal_modulus.or(j.normal_modulus), s.shear_modulus.or(j.shear_modulus), s.thickness.or(j.thickness))
         }
     };

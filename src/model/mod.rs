@@ -1,17 +1,20 @@
 //! The immutable [`Model`]: node copies (struct of arrays), elements with their
 //! condensed operators, springs, constraints and loads. Built once from a
-//! [`Mesh`](crate::mesh::Mesh) and a [`Scene`](crate::scene::Scene) by [`build`].
+//! [`Mesh`](crate::mesh::Mesh) and a [`ModelSpec`] by [`build`].
 
 mod build;
+pub mod spec;
 
 pub use build::build;
-pub(crate) use build::{cell_materials, fixed_mesh_nodes, perturbed_coordinates, scene_materials};
+pub use build::{cell_materials, fixed_mesh_nodes, perturbed_coordinates, spec_materials};
+pub use spec::{JointMode, ModelSpec};
 
+use crate::mesh::shape::CellDefect;
 use crate::mesh::CellKind;
+use crate::physics::tet_operator::TetOperators;
 use crate::physics::element::element_stress;
 use crate::physics::material::Material;
 use crate::physics::spring::{Springs, Strength};
-use crate::scene::JointMode;
 
 /// Elements, struct of arrays. Element `e` owns corners
 /// `nodes[offset[e]..offset[e+1]]` (model node indices) and the stiffness
@@ -127,6 +130,19 @@ pub struct Model {
 }
 
 impl Model {
+    /// The per-tetrahedron operators of every element (the alternative form of
+    /// eq. 12, [`TetOperators`]), from the reference coordinates; the error
+    /// names the first element whose cell is defective.
+    pub fn tet_operators(&self) -> Result<TetOperators, (usize, CellDefect)> {
+        let el = &self.elements;
+        let mut ops = TetOperators::new();
+        for e in 0..el.len() {
+            let corners: Vec<[f64; 3]> = el.corners(e).iter().map(|&n| self.x0[n as usize]).collect();
+            ops.push(el.kind[e], &corners, self.materials[el.material[e] as usize].lame).map_err(|d| (e, d))?;
+        }
+        Ok(ops)
+    }
+
     pub fn n_nodes(&self) -> usize {
         self.x0.len()
     }

@@ -1,18 +1,24 @@
-//! Outputs of a run: `summary.json`, `history.csv`, VTK frames (`.vtu` + `.pvd`).
-//! Every file is written to a temporary name and renamed, so a failed run
-//! leaves no half-written file behind.
+//! Writing results: `summary.json`, `history.csv`, VTK frames (`.vtu` +
+//! `.pvd`), the phase-2 tables, and the FEM's files ([`fem`]). The top of
+//! the library's layers: it writes what the drivers return.
+//!
+//! Every file is written to a temporary name and renamed; a run's files are
+//! written into a staging directory and moved into place together
+//! ([`write_run`]), so a failed run leaves nothing half-written behind.
 
-pub mod figures;
-pub mod section;
+pub mod fem;
+pub mod run;
 pub mod vtk;
 
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 
 use crate::error::Error;
-use crate::solver::HistoryRow;
+
+pub use fem::write_fem;
+pub use run::write_run;
 
 /// Writes `bytes` to `path` atomically (temporary file + rename).
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), Error> {
@@ -23,15 +29,40 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), Error> {
 }
 
 pub fn write_json<T: Serialize>(path: &Path, value: &T) -> Result<(), Error> {
-    let text = serde_json::to_string_pretty(value).expect("summary serialises");
+    let text = serde_json::to_string_pretty(value).map_err(|e| Error::io(path, std::io::Error::other(e)))?;
     write_atomic(path, text.as_bytes())
 }
 
-pub fn write_history(path: &Path, rows: &[HistoryRow]) -> Result<(), Error> {
+/// Writes serialisable rows as CSV (header from the field names).
+pub fn write_csv<T: Serialize>(path: &Path, rows: impl IntoIterator<Item = T>) -> Result<(), Error> {
     let mut w = csv::Writer::from_writer(Vec::new());
     for r in rows {
         w.serialize(r).map_err(|e| Error::io(path, std::io::Error::other(e)))?;
     }
     let bytes = w.into_inner().map_err(|e| Error::io(path, std::io::Error::other(e.to_string())))?;
     write_atomic(path, &bytes)
+}
+
+/// A sibling of `out` named `.<name>.partial-<pid>`.
+pub fn staging_dir(out: &Path) -> PathBuf {
+    let name = out.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "out".into());
+    out.with_file_name(format!(".{name}.partial-{}", std::process::id()))
+}
+
+/// Runs `write` on a fresh staging directory, which returns the names of the
+/// files it wrote; moves them all into `out` only if it succeeded, then
+/// removes the staging directory.
+pub fn staged(out: &Path, write: impl FnOnce(&Path) -> Result<Vec<String>, Error>) -> Result<(), Error> {
+    let staging = staging_dir(out);
+    let _ = std::fs::remove_dir_all(&staging);
+    let written = std::fs::create_dir_all(&staging).map_err(|e| Error::io(&staging, e)).and_then(|_| write(&staging));
+    let moved = written.and_then(|files| {
+        std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
+        for f in files {
+            std::fs::rename(staging.join(&f), out.join(&f)).map_err(|e| Error::io(out.join(&f), e))?;
+        }
+        Ok(())
+    });
+    let _ = std::fs::remove_dir_all(&staging);
+    moved
 }

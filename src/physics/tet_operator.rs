@@ -36,7 +36,6 @@
 //! equals `K_e u_e` up to round-off (tests/tet_operator.rs, 1e-12 relative).
 
 use crate::mesh::shape::{check_cell, CellDefect, CellKind, Decomposition, MAX_POINTS};
-use crate::model::Model;
 use crate::physics::element::tet_gradients;
 use crate::physics::material::Lame;
 
@@ -227,18 +226,6 @@ impl TetOperators {
             lame: Vec::new(),
             topo: [TetTopology::of(CellKind::Tet4), TetTopology::of(CellKind::Prism6), TetTopology::of(CellKind::Hex8)],
         }
-    }
-
-    /// The operators of every element of `model`, from its reference
-    /// coordinates; the error names the first element whose cell is defective.
-    pub fn of_model(model: &Model) -> Result<Self, (usize, CellDefect)> {
-        let el = &model.elements;
-        let mut ops = Self::new();
-        for e in 0..el.len() {
-            let corners: Vec<[f64; 3]> = el.corners(e).iter().map(|&n| model.x0[n as usize]).collect();
-            ops.push(el.kind[e], &corners, model.materials[el.material[e] as usize].lame).map_err(|d| (e, d))?;
-        }
-        Ok(ops)
     }
 
     /// Appends one cell.

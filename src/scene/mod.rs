@@ -49,6 +49,9 @@ use std::path::{Path, PathBuf};
 use serde::Deserialize;
 
 use crate::error::SceneError;
+pub use crate::model::spec::{
+    Axis, Boundary, InterfaceSection, JointMode, Joints, MaterialSection, ModelSpec, Perturbation, StrengthSection,
+};
 use crate::solver::SolverParams;
 
 #[derive(Debug, Clone, Deserialize)]
@@ -71,7 +74,7 @@ pub struct Scene {
     #[serde(default)]
     pub output: Output,
     /// Phase 2 (progressive failure), if present.
-    pub failure: Option<crate::progressive::FailureParams>,
+    pub failure: Option<FailureParams>,
     /// Directory of the scene file: relative paths are resolved against it.
     #[serde(skip)]
     pub base_dir: PathBuf,
@@ -83,111 +86,6 @@ pub struct MeshSection {
     pub file: PathBuf,
 }
 
-#[derive(Debug, Clone, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Perturbation {
-    /// Maximum offset per axis as a fraction of the local edge length (0 = off).
-    #[serde(default)]
-    pub ratio: f64,
-    #[serde(default)]
-    pub seed: u64,
-    /// Surface groups whose nodes may move only within the group's plane.
-    #[serde(default)]
-    pub keep_flat: Vec<String>,
-}
-
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct MaterialSection {
-    pub group: String,
-    pub youngs_modulus: f64,
-    pub poisson_ratio: f64,
-    pub density: f64,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
-#[serde(rename_all = "lowercase")]
-pub enum JointMode {
-    /// Node copies joined by springs (the CDEM default).
-    #[default]
-    Springs,
-    /// Shared nodes, no springs: a continuous interface.
-    Merged,
-}
-
-/// The default structural plane: every interface not listed in `[[interface]]`.
-#[derive(Debug, Clone, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Joints {
-    #[serde(default)]
-    pub mode: JointMode,
-    /// `E_j` (Pa).
-    pub normal_modulus: Option<f64>,
-    /// `G_j` (Pa).
-    pub shear_modulus: Option<f64>,
-    /// Equivalent thickness `L` (m).
-    pub thickness: Option<f64>,
-    /// Makes these joints breakable (eq. 17-18) in the failure phase.
-    pub strength: Option<StrengthSection>,
-}
-
-/// Strength of a breakable structural plane.
-#[derive(Debug, Clone, Copy, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct StrengthSection {
-    /// Tensile strength `T` (Pa), eq. 17.
-    pub tensile: f64,
-    /// Cohesion `c` (Pa), eq. 18.
-    pub cohesion: f64,
-    /// Friction angle `phi` (degrees, in [0, 90)), eq. 18.
-    pub friction_angle: f64,
-}
-
-impl From<StrengthSection> for crate::physics::spring::Strength {
-    fn from(s: StrengthSection) -> Self {
-        Self { tensile: s.tensile, cohesion: s.cohesion, tan_phi: s.friction_angle.to_radians().tan() }
-    }
-}
-
-/// An interface group (a surface physical group lying between elements).
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct InterfaceSection {
-    pub group: String,
-    #[serde(default)]
-    pub mode: JointMode,
-    pub normal_modulus: Option<f64>,
-    pub shear_modulus: Option<f64>,
-    pub thickness: Option<f64>,
-    /// Makes this interface breakable (eq. 17-18) in the failure phase.
-    pub strength: Option<StrengthSection>,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Axis {
-    X,
-    Y,
-    Z,
-}
-
-impl Axis {
-    /// Component index: x 0, y 1, z 2.
-    pub fn index(self) -> usize {
-        match self {
-            Axis::X => 0,
-            Axis::Y => 1,
-            Axis::Z => 2,
-        }
-    }
-}
-
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Boundary {
-    pub group: String,
-    pub fix: Vec<Axis>,
-}
 
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -225,6 +123,37 @@ pub struct Output {
     pub stress: bool,
 }
 
+/// Scene section `[failure]`: present = run phase 2 (breakable joints).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct FailureParams {
+    /// Step limit of phase 2. Default 200 000.
+    pub max_steps: usize,
+    /// Record a stage row every this many steps. Default 500.
+    pub stage_every: usize,
+    /// Global sliding: the largest displacement since the end of phase 1
+    /// passes this bound (m). Default 1.0.
+    pub sliding_displacement: f64,
+}
+
+impl Default for FailureParams {
+    fn default() -> Self {
+        Self { max_steps: 200_000, stage_every: 500, sliding_displacement: 1.0 }
+    }
+}
+
+impl FailureParams {
+    pub fn validate(&self) -> Result<(), SceneError> {
+        if self.max_steps == 0 || self.stage_every == 0 {
+            return Err(SceneError::invalid("failure.max_steps/stage_every", "must be at least 1"));
+        }
+        if !(self.sliding_displacement.is_finite() && self.sliding_displacement > 0.0) {
+            return Err(SceneError::invalid("failure.sliding_displacement", "must be a finite positive length"));
+        }
+        Ok(())
+    }
+}
+
 fn yes() -> bool {
     true
 }
@@ -253,6 +182,18 @@ impl Scene {
         let text = std::fs::read_to_string(path).map_err(|e| crate::Error::io(path, e))?;
         let base = path.parent().unwrap_or(Path::new("."));
         Ok(Self::from_toml(&text, base, path)?)
+    }
+
+    /// The model sections, for [`crate::model::build`] and the FEM.
+    pub fn model_spec(&self) -> ModelSpec<'_> {
+        ModelSpec {
+            perturbation: &self.perturbation,
+            material: &self.material,
+            joints: &self.joints,
+            interface: &self.interface,
+            boundary: &self.boundary,
+            gravity: self.loads.gravity,
+        }
     }
 
     /// The mesh path, resolved against the scene's directory.

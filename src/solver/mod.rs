@@ -4,14 +4,21 @@
 //! 1. internal forces: elements (eq. 12) and springs (eq. 15);
 //! 2. update: damping (eq. 13) and explicit integration (eq. 14) with fixities;
 //! 3. monitor: convergence ratio, energies, non-finite state and blow-up.
+//!
+//! [`relax`](relax::relax) steps until a stop rule fires; it is the one loop
+//! every driver uses.
 
 pub mod block_mass;
 pub mod forces;
+pub mod inertia;
 pub mod integrate;
 pub mod params;
+pub mod relax;
 pub mod timestep;
 
+pub use inertia::Inertia;
 pub use params::{DampingKind, SolverParams};
+pub use relax::{relax, Observer, RunReport, Sliding, StepView, Stop, StopRules};
 
 use serde::Serialize;
 
@@ -21,7 +28,7 @@ use crate::model::ELEMENT_SLOT;
 use crate::physics::damping::{rayleigh_omega2, rayleigh_omega2_with};
 use crate::physics::spring::SpringState;
 use block_mass::BlockMass;
-use integrate::{integrate, Masses, UpdateInput};
+use integrate::{integrate, UpdateInput};
 
 /// What changes during a run, in flat arrays indexed `3 i + d`.
 #[derive(Debug, Clone)]
@@ -63,21 +70,13 @@ pub struct HistoryRow {
     pub max_displacement: f64,
 }
 
-/// How a run ended.
-#[derive(Debug, Clone, Serialize)]
-pub struct RunReport {
-    pub converged: bool,
-    pub steps: usize,
-    pub dt: f64,
-    pub unbalanced_ratio: f64,
-    pub history: Vec<HistoryRow>,
-}
-
-/// The solver owns its scratch: inertial masses, the step and damping state.
+/// The solver owns its scratch: inertial masses, the step and damping
+/// state. Its settings, masses and step are fixed at construction (they must
+/// stay consistent with each other) and read through methods.
 pub struct Solver {
-    pub params: SolverParams,
-    pub mass: Vec<f64>,
-    pub dt: f64,
+    params: SolverParams,
+    inertia: Inertia,
+    dt: f64,
     f_ext_max: f64,
     viscous_c: f64,
     last_kinetic: f64,
@@ -90,15 +89,6 @@ pub struct Solver {
     /// Failure phase on: breakable springs check eq. 17-18. Only true when
     /// the model has a breakable interface.
     failure: bool,
-    /// Node-block masses (`params.block_mass`, elastic phase), used instead
-    /// of `mass` by the update, the damping and the kinetic energy.
-    block: Option<BlockMass>,
-    /// Scratch: one value per node (block-mass quadratic forms).
-    per_node: Vec<f64>,
-    /// Scratch for block masses: the unbalanced force and the acceleration,
-    /// per component in cluster-slot order.
-    slot_force: Vec<f64>,
-    slot_acc: Vec<f64>,
 }
 
 impl Solver {
@@ -107,15 +97,15 @@ impl Solver {
         let amplification = if params.damping == DampingKind::Local { 1.0 + params.local_damping } else { 1.0 };
         let (mass, dt) = timestep::masses_and_step(model, &rows, params.safety, params.mass_scaling, amplification)
             .ok_or(SolveError::NoTimeStep)?;
-        let block = match params.uses_block_mass() {
-            true => Some(BlockMass::new(model, amplification / (4.0 * params.safety * params.safety))?),
-            false => None,
+        let inertia = match params.uses_block_mass() {
+            true => Inertia::block(mass, BlockMass::new(model, amplification / (4.0 * params.safety * params.safety))?),
+            false => Inertia::lumped(mass),
         };
         let f_ext_max =
             model.f_ext.iter().zip(&model.fixed).filter(|(_, &fx)| !fx).map(|(f, _)| f.abs()).fold(0.0, f64::max);
         Ok(Self {
             params,
-            mass,
+            inertia,
             dt,
             f_ext_max,
             viscous_c: 0.0,
@@ -124,11 +114,26 @@ impl Solver {
             f_spring: vec![[0.0; 3]; model.springs.len()],
             partial: vec![integrate::UpdateReport::default(); (3 * model.n_nodes()).div_ceil(integrate::CHUNK)],
             failure: false,
-            per_node: vec![0.0; model.n_nodes()],
-            slot_force: vec![0.0; if block.is_some() { 3 * model.n_nodes() } else { 0 }],
-            slot_acc: vec![0.0; if block.is_some() { 3 * model.n_nodes() } else { 0 }],
-            block,
         })
+    }
+
+    pub fn params(&self) -> &SolverParams {
+        &self.params
+    }
+
+    /// The time step (s; 1 with mass scaling, a fictitious time).
+    pub fn dt(&self) -> f64 {
+        self.dt
+    }
+
+    /// Replaces the time step. For experiments only: a step beyond the
+    /// stable bound is caught by the energy monitor as [`SolveError::Unstable`].
+    pub fn set_time_step(&mut self, dt: f64) {
+        self.dt = dt;
+    }
+
+    pub fn inertia(&self) -> &Inertia {
+        &self.inertia
     }
 
     /// Turns the failure phase (phase 2) on or off. It stays off for a model
@@ -136,15 +141,18 @@ impl Solver {
     pub fn set_failure(&mut self, model: &Model, on: bool) {
         self.failure = on && model.interfaces.iter().any(|i| i.strength.is_some());
         if self.failure {
-            self.block = None;
+            self.inertia.to_lumped();
         }
     }
 
     /// Kinetic energy `v . M v / 2` with the inertial masses (J).
     pub fn kinetic_energy(&mut self, state: &State) -> f64 {
-        match &self.block {
-            Some(b) => 0.5 * b.quadratic(&state.v, &mut self.per_node),
-            None => (0..state.v.len()).map(|k| 0.5 * self.mass[k / 3] * state.v[k] * state.v[k]).sum(),
+        match self.inertia.is_block() {
+            true => 0.5 * self.inertia.quadratic(&state.v),
+            false => {
+                let m = self.inertia.lumped_masses();
+                (0..state.v.len()).map(|k| 0.5 * m[k / 3] * state.v[k] * state.v[k]).sum()
+            }
         }
     }
 
@@ -164,19 +172,9 @@ impl Solver {
     pub fn step(&mut self, model: &Model, state: &mut State) -> Result<(f64, f64), SolveError> {
         self.internal_forces(model, state);
         self.update_damping(state);
-        if let Some(b) = &self.block {
-            let (fixed, f_ext, f_int) = (&model.fixed, &model.f_ext, &state.f_int);
-            b.accelerations(
-                |k| integrate::unbalanced(fixed, f_ext, f_int, k),
-                &mut self.slot_force,
-                &mut self.slot_acc,
-            );
-        }
+        self.inertia.prepare(&model.fixed, &model.f_ext, &state.f_int);
         let inp = UpdateInput {
-            mass: match &self.block {
-                Some(b) => Masses::Block(b, &self.slot_acc),
-                None => Masses::Lumped(&self.mass),
-            },
+            mass: self.inertia.masses(),
             fixed: &model.fixed,
             f_ext: &model.f_ext,
             f_int: &state.f_int,
@@ -192,7 +190,7 @@ impl Solver {
         if !kinetic.is_finite() {
             return Err(self.non_finite(state));
         }
-        if self.block.is_some() && state.step % 16 == 0 {
+        if self.inertia.is_block() && state.step % 16 == 0 {
             kinetic = self.kinetic_energy(state);
         }
         self.monitor(model, state, kinetic)?;
@@ -203,9 +201,9 @@ impl Solver {
     /// refreshed every 10 steps.
     fn update_damping(&mut self, state: &State) {
         if self.params.damping == DampingKind::Viscous && state.step % 10 == 0 {
-            let w2 = match &self.block {
-                Some(b) => rayleigh_omega2_with(dot(&state.u, &state.f_int), b.quadratic(&state.u, &mut self.per_node)),
-                None => rayleigh_omega2(&state.u, &state.f_int, &self.mass),
+            let w2 = match self.inertia.is_block() {
+                true => rayleigh_omega2_with(dot(&state.u, &state.f_int), self.inertia.quadratic(&state.u)),
+                false => rayleigh_omega2(&state.u, &state.f_int, self.inertia.lumped_masses()),
             };
             if w2 > 0.0 {
                 self.viscous_c = 2.0 * w2.sqrt();
@@ -258,7 +256,7 @@ impl Solver {
     }
 
     fn node_kinetic(&self, state: &State, i: usize) -> f64 {
-        0.5 * self.mass[i] * (0..3).map(|d| state.v[3 * i + d].powi(2)).sum::<f64>()
+        0.5 * self.inertia.lumped_masses()[i] * (0..3).map(|d| state.v[3 * i + d].powi(2)).sum::<f64>()
     }
 
     /// Unbalanced-force ratio `max |f_unbal| / max |f_ext|` (0 if unloaded and at rest).
@@ -272,41 +270,10 @@ impl Solver {
         }
     }
 
-    /// Runs until the unbalanced-force ratio is below the tolerance or
-    /// `max_steps`, recording a history row every `history_every` steps.
-    /// `observe(state, ratio)` is called every `observe_every` steps (0: never)
-    /// for progress display and frames.
-    pub fn relax(
-        &mut self,
-        model: &Model,
-        state: &mut State,
-        history_every: usize,
-        observe_every: usize,
-        observe: &mut dyn FnMut(&State, f64),
-    ) -> Result<RunReport, SolveError> {
-        let mut history = Vec::new();
-        let mut ratio = f64::INFINITY;
-        let first = state.step;
-        let mut converged = false;
-        while state.step - first < self.params.max_steps {
-            let (unbalanced, kinetic) = self.step(model, state)?;
-            ratio = self.ratio(unbalanced);
-            converged = ratio < self.params.tolerance;
-            if state.step % history_every == 0 || converged {
-                let kinetic = if self.block.is_some() { self.kinetic_energy(state) } else { kinetic };
-                history.push(self.history_row(model, state, kinetic, ratio));
-            }
-            if observe_every > 0 && state.step % observe_every == 0 {
-                observe(state, ratio);
-            }
-            if converged {
-                break;
-            }
-        }
-        Ok(RunReport { converged, steps: state.step - first, dt: self.dt, unbalanced_ratio: ratio, history })
-    }
-
-    fn history_row(&self, model: &Model, state: &State, kinetic: f64, ratio: f64) -> HistoryRow {
+    /// A history row of `state`; `kinetic` is the step's estimate, replaced
+    /// by the exact `v . M v / 2` with block masses.
+    pub fn history_row(&mut self, model: &Model, state: &State, kinetic: f64, ratio: f64) -> HistoryRow {
+        let kinetic = if self.inertia.is_block() { self.kinetic_energy(state) } else { kinetic };
         let max_displacement =
             state.u.chunks(3).map(|d| (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()).fold(0.0, f64::max);
         HistoryRow {

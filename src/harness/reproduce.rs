@@ -14,12 +14,12 @@ use std::time::Instant;
 use crate::analysis::slip::{from_springs, from_stresses, SlipCircle};
 use crate::analysis::{safety_factors, sign_segments};
 use crate::error::Error;
-use crate::output::figures::{line_plot, section_contour, Scale, Series};
-use crate::output::section::{element_mean_displacement, front_patches, front_patches_of_cells};
-use crate::progressive::{run_progressive, ProgressiveResult};
-use crate::run::run_scene;
+use crate::harness::figures::{line_plot, section_contour, Scale, Series};
+use crate::harness::section::{element_mean_displacement, front_patches, front_patches_of_cells};
+use crate::drivers::{run_watched, RunResult, StageSnapshots};
+use crate::drivers::run_scene;
 use crate::scene::Scene;
-use crate::validation::{markdown_table, Check};
+use crate::harness::report::{markdown_table, Check};
 
 /// The slip circle of verification/cases/slope-slip/slope-slip.geo.
 pub const SLIP_CIRCLE: SlipCircle = SlipCircle { xc: 24.006, zc: 63.222, toe: [20.0, 20.0] };
@@ -66,18 +66,24 @@ pub fn regenerate_meshes(progress: &mut dyn FnMut(&str)) -> Result<usize, Error>
 }
 
 /// Displacement (since `base`) contours of a progressive run at three stages.
-pub fn stage_figures(r: &ProgressiveResult, out: &Path, prefix: &str) -> Result<Vec<(String, String)>, Error> {
-    let n = r.stages.len();
+pub fn stage_figures(
+    r: &RunResult,
+    snapshots: &StageSnapshots,
+    out: &Path,
+    prefix: &str,
+) -> Result<Vec<(String, String)>, Error> {
+    let Some(f) = &r.failure else { return Ok(Vec::new()) };
+    let n = f.stages.len();
     let mut files = Vec::new();
     if n == 0 {
         return Ok(files);
     }
     for (tag, idx) in [("early", 0), ("middle", n / 2), ("end", n - 1)] {
-        let du: Vec<f64> = r.stage_u[idx].iter().zip(&r.u_elastic).map(|(a, b)| a - b).collect();
+        let du: Vec<f64> = snapshots.u[idx].iter().zip(&f.u_elastic).map(|(a, b)| a - b).collect();
         for (comp, name) in [(0, "u_x"), (2, "u_z")] {
             let p = front_patches(&r.model, |e| element_mean_displacement(&r.model, &du, e, comp));
             let file = format!("{prefix}-{tag}-{name}.png");
-            let title = format!("Phase 2, step {}: {name} since phase 1", r.stages[idx].step);
+            let title = format!("Phase 2, step {}: {name} since phase 1", f.stages[idx].step);
             section_contour(&out.join(&file), &title, &format!("{name} (m)"), &p, &[])?;
             files.push((title, file));
         }
@@ -114,7 +120,7 @@ pub fn reproduce(out: &Path, regenerate: bool, progress: &mut dyn FnMut(&str)) -
     progress("elastic slope (CDEM, FEM)");
     let scene = Scene::load(Path::new("verification/cases/slope/slope.toml"))?;
     let r = run_scene(&scene, &mut |_, _| {})?;
-    let fem = crate::fem::solve_scene(&scene)?;
+    let fem = crate::drivers::solve_fem(&scene)?;
     let (c, f) = (&r.summary, &fem.summary);
     let l2 = crate::analysis::compare::relative_l2_displacement(&r.model, &r.state.u, &fem.u);
     let (cs, fs) = (c.min_szz.unwrap_or(f64::NAN), f.min_szz.unwrap_or(f64::NAN));
@@ -165,7 +171,7 @@ pub fn reproduce(out: &Path, regenerate: bool, progress: &mut dyn FnMut(&str)) -
         c.steps, c.wall_s, f.wall_s
     );
     let stress = r.stress.clone().unwrap_or_default();
-    let figs: [(&str, &str, Vec<crate::output::figures::Patch>); 4] = [
+    let figs: [(&str, &str, Vec<crate::harness::figures::Patch>); 4] = [
         ("fig6-szz-cdem.png", "CDEM sigma_zz (Pa)", front_patches(&r.model, |e| stress[e][2])),
         (
             "fig6-szz-fem.png",
@@ -190,13 +196,13 @@ pub fn reproduce(out: &Path, regenerate: bool, progress: &mut dyn FnMut(&str)) -
         section_contour(&rep.path(file), title, title, patches, &[])?;
         rep.figure(title, file);
     }
-    let ratio: Vec<(f64, f64)> = r.report.history.iter().map(|h| (h.step as f64, h.unbalanced_ratio)).collect();
+    let ratio: Vec<(f64, f64)> = r.elastic.history.iter().map(|h| (h.step as f64, h.unbalanced_ratio)).collect();
     let ke: Vec<(f64, f64)> = r
-        .report
+        .elastic
         .history
         .iter()
         .map(|h| {
-            (h.step as f64, h.kinetic_energy / r.report.history.iter().map(|h| h.kinetic_energy).fold(0.0, f64::max))
+            (h.step as f64, h.kinetic_energy / r.elastic.history.iter().map(|h| h.kinetic_energy).fold(0.0, f64::max))
         })
         .collect();
     line_plot(
@@ -240,10 +246,10 @@ pub fn reproduce(out: &Path, regenerate: bool, progress: &mut dyn FnMut(&str)) -
     progress("eq. 21 on the slip circle");
     let slip_scene = Scene::load(Path::new("verification/cases/slope-slip/slope-slip.toml"))?;
     let rs = run_scene(&slip_scene, &mut |_, _| {})?;
-    let fem_s = crate::fem::solve_scene(&slip_scene)?;
+    let fem_s = crate::drivers::solve_fem(&slip_scene)?;
     let mesh = crate::mesh::gmsh::read_msh(&slip_scene.mesh_path())?;
     let tan_phi = 18f64.to_radians().tan();
-    let pts_sp = from_springs(&rs.model, &rs.state, "slip", &SLIP_CIRCLE).unwrap_or_default();
+    let pts_sp = from_springs(&rs.model, &rs.state.u, &rs.state.springs, "slip", &SLIP_CIRCLE).unwrap_or_default();
     let pts_fem = from_stresses(&mesh, &fem_s.coords, "slip", &SLIP_CIRCLE, &fem_s.stress).unwrap_or_default();
     let (k_sp, k_fem) = (safety_factors(&pts_sp, 16e3, tan_phi), safety_factors(&pts_fem, 16e3, tan_phi));
     rep.checks.extend([
@@ -311,22 +317,26 @@ pub fn reproduce(out: &Path, regenerate: bool, progress: &mut dyn FnMut(&str)) -
         }
         progress(&format!("progressive failure: {name}"));
         let scene = Scene::load(Path::new(path))?;
-        let Some(params) = scene.failure.clone() else { continue };
+        if scene.failure.is_none() {
+            continue;
+        }
         let t0 = Instant::now();
-        let pr = run_progressive(&scene, &params, &mut |_, _| {})?;
-        let last = pr.stages.last().copied();
+        let mut snapshots = StageSnapshots::default();
+        let pr = run_watched(&scene, &mut snapshots)?;
+        let f = pr.failure.as_ref().expect("a [failure] scene has phase 2");
+        let last = f.stages.last().copied();
         let _ = writeln!(
             rep.md,
             "## Progressive failure: {name} ({prefix})\n\nPhase 1: {} steps; phase 2: {:?} after {} steps ({:.1} s); failed springs: {} tension, {} shear; displacement since phase 1 {:.3} m.\n",
             pr.elastic.steps,
-            pr.end,
-            pr.phase2_steps,
+            f.end,
+            f.report.steps,
             t0.elapsed().as_secs_f64(),
             last.map_or(0, |s| s.failed_tension),
             last.map_or(0, |s| s.failed_shear),
             last.map_or(0.0, |s| s.max_displacement)
         );
-        for (title, file) in stage_figures(&pr, out, prefix)? {
+        for (title, file) in stage_figures(&pr, &snapshots, out, prefix)? {
             rep.figure(&title, &file);
         }
     }
@@ -334,7 +344,7 @@ pub fn reproduce(out: &Path, regenerate: bool, progress: &mut dyn FnMut(&str)) -
     // 8. Error against run time.
     progress("error against run time");
     let study_dir = out.join("study");
-    crate::study::run_study(&study_dir, progress)?;
+    crate::harness::study::run_study(&study_dir, progress)?;
     let table =
         std::fs::read_to_string(study_dir.join("study.md")).map_err(|e| Error::io(study_dir.join("study.md"), e))?;
     let _ = writeln!(rep.md, "## Error against run time\n\nRelative L2 error of the displacement field (column: analytic; slope: FEM on the 0.5 m mesh), one factor varied at a time.\n\n{table}");

@@ -7,9 +7,9 @@
 use std::fmt::Write;
 use std::path::Path;
 
-use super::FemSolution;
+use super::{staged, vtk::write_pvd, write_atomic, write_json};
 use crate::error::Error;
-use crate::output::{vtk::write_pvd, write_atomic, write_json};
+use crate::fem::FemSolution;
 
 /// The `.vtu` text of a solution (ASCII VTK XML unstructured grid).
 pub fn vtu_string(sol: &FemSolution) -> String {
@@ -58,10 +58,13 @@ pub fn vtu_string(sol: &FemSolution) -> String {
     s
 }
 
-/// Writes `out/summary.json`, `out/final.vtu` and `out/run.pvd` (each atomically).
-pub fn write_outputs(sol: &FemSolution, out: &Path) -> Result<(), Error> {
-    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
-    write_json(&out.join("summary.json"), &sol.summary)?;
-    write_atomic(&out.join("final.vtu"), vtu_string(sol).as_bytes())?;
-    write_pvd(&out.join("run.pvd"), &[(0.0, "final.vtu".to_string())])
+/// Writes `out/summary.json`, `out/final.vtu` and `out/run.pvd`, staged
+/// (moved into `out` together).
+pub fn write_fem(sol: &FemSolution, out: &Path) -> Result<(), Error> {
+    staged(out, |dir| {
+        write_json(&dir.join("summary.json"), &sol.summary)?;
+        write_atomic(&dir.join("final.vtu"), vtu_string(sol).as_bytes())?;
+        write_pvd(&dir.join("run.pvd"), &[(0.0, "final.vtu".to_string())])?;
+        Ok(vec!["summary.json".into(), "final.vtu".into(), "run.pvd".into()])
+    })
 }

@@ -17,9 +17,10 @@ use std::path::Path;
 use serde::Serialize;
 
 use crate::error::Error;
-use crate::fem::{solve_scene, FemSolution};
-use crate::output::figures::{line_plot, Scale, Series};
-use crate::run::run_scene;
+use crate::drivers::solve_fem as solve_scene;
+use crate::fem::FemSolution;
+use crate::harness::figures::{line_plot, Scale, Series};
+use crate::drivers::run_scene;
 use crate::scene::Scene;
 
 /// One point of the study.

@@ -140,9 +140,7 @@ pub struct DrFigure {
 
 pub fn time_dr(model: &Model, params: &SolverParams) -> Result<DrFigure, Error> {
     let t = Instant::now();
-    let mut solver = Solver::new(model, params.clone())?;
-    let mut state = State::new(model);
-    let report = solver.relax(model, &mut state, usize::MAX, 0, &mut |_, _| {})?;
+    let (state, report) = crate::drivers::run::relax_elastic(model, params, usize::MAX)?;
     let seconds = t.elapsed().as_secs_f64();
     let max_abs_uz = state.u.chunks(3).map(|d| d[2].abs()).fold(0.0, f64::max);
     Ok(DrFigure { converged: report.converged, steps: report.steps, seconds, max_abs_uz })
@@ -156,7 +154,7 @@ pub fn time_fem(scene: &Scene, repeats: usize) -> Result<(f64, usize), Error> {
     let mut dofs = 0;
     for _ in 0..repeats.max(1) {
         let t = Instant::now();
-        let sol = crate::fem::solve_scene(scene)?;
+        let sol = crate::drivers::solve_fem(scene)?;
         best = best.min(t.elapsed().as_secs_f64());
         dofs = sol.free_dofs;
     }
@@ -271,7 +269,7 @@ pub fn scaling_study(
         s.mesh.file = mesh.clone();
         progress(&format!("scaling: refine {refine}: build"));
         let t = Instant::now();
-        let model = crate::run::build_model(&s)?;
+        let model = crate::drivers::build_model(&s)?;
         let build_s = t.elapsed().as_secs_f64();
         let n = model.elements.len();
         progress(&format!("scaling: {n} elements: steps"));
@@ -503,7 +501,7 @@ pub fn pyslope_seconds(json: &Path, case: &str) -> Result<f64, Error> {
 /// The paper slope's scene and model (paths relative to the repository root).
 pub fn paper_slope(root: &Path) -> Result<(Scene, Model), Error> {
     let scene = Scene::load(&root.join("verification/cases/slope/slope.toml"))?;
-    let model = crate::run::build_model(&scene)?;
+    let model = crate::drivers::build_model(&scene)?;
     Ok((scene, model))
 }
 
@@ -584,7 +582,7 @@ pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn 
     write_csv(&out.join("damping.csv"), &damping)?;
     write_csv(&out.join("scaling.csv"), &scaling)?;
     if scaling.len() >= 2 {
-        use crate::output::figures::{line_plot, Scale, Series};
+        use crate::harness::figures::{line_plot, Scale, Series};
         let pts =
             |f: &dyn Fn(&ScalingRow) -> f64| scaling.iter().map(|r| (r.elements as f64, f(r))).collect::<Vec<_>>();
         let (step, dr, fem) = (pts(&|r| r.step_s), pts(&|r| r.dr_s), pts(&|r| r.fem_s));

@@ -1,0 +1,16 @@
+//! Drivers: a scene from its file to its results, in memory. They sit above
+//! the solver, the FEM and the LEM and below `output` (which writes what they
+//! return), and they relax only through [`solver::relax`](crate::solver::relax).
+//!
+//! - [`run`]: the CDEM run of a scene: phase 1 (elastic) and, for a scene
+//!   with `[failure]`, phase 2 ([`failure`]: breakable joints, stages, end state);
+//! - [`fem`]: the implicit FEM reference on the scene's continuous mesh.
+
+pub mod failure;
+pub mod fem;
+pub mod run;
+
+pub use failure::{FailureResult, Stage, StageSnapshots};
+pub use fem::solve_scene as solve_fem;
+pub use run::{build_model, read_mesh, run_scene, run_watched, Frame, Phase, Progress, RunResult, Watch};
+pub use crate::summary::EndState;

@@ -1,0 +1,193 @@
+//! The CDEM run of a scene: read the mesh, build the model, relax phase 1
+//! (elastic), then, for a scene with `[failure]`, phase 2 (breakable joints,
+//! [`super::failure`]); summarise. Orchestration only: the arithmetic is in
+//! the solver, the files are written by `output`.
+
+use std::ops::ControlFlow;
+use std::time::Instant;
+
+use super::failure::{self, FailureResult, Stage};
+use crate::error::Error;
+use crate::mesh::gmsh::read_msh;
+use crate::mesh::Mesh;
+use crate::model::{self, Model};
+use crate::physics::spring::SpringStatus;
+use crate::scene::Scene;
+use crate::solver::relax::{max_displacement_since, unobserved};
+use crate::solver::{relax, RunReport, Solver, State, StepView, StopRules};
+use crate::summary::{EndState, FailedSprings, FieldExtremes, PhaseSummary, Summary};
+
+/// The two phases of a run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Phase {
+    /// Phase 1: intact joints, to equilibrium.
+    Elastic = 1,
+    /// Phase 2: breakable joints (eq. 17-18).
+    Failure = 2,
+}
+
+/// What a caller sees of a run as it goes. Both methods default to nothing.
+pub trait Watch {
+    /// After every step of either phase; `Break` stops the phase
+    /// ([`crate::solver::Stop::Caller`]).
+    fn step(&mut self, _phase: Phase, _view: &StepView) -> ControlFlow<()> {
+        ControlFlow::Continue(())
+    }
+    /// At every stage row of phase 2, with the state it was taken from.
+    fn stage(&mut self, _stage: &Stage, _state: &State) {}
+}
+
+/// A watcher that reports `(global step, unbalanced ratio)` every 100 steps.
+pub struct Progress<'a>(pub &'a mut dyn FnMut(usize, f64));
+
+impl Watch for Progress<'_> {
+    fn step(&mut self, _phase: Phase, view: &StepView) -> ControlFlow<()> {
+        if view.steps % 100 == 0 {
+            (self.0)(view.state.step, view.ratio);
+        }
+        ControlFlow::Continue(())
+    }
+}
+
+/// A displacement frame recorded during a phase.
+#[derive(Debug, Clone)]
+pub struct Frame {
+    /// Step within its phase.
+    pub step: usize,
+    pub time: f64,
+    pub u: Vec<f64>,
+}
+
+/// Everything a run produced.
+pub struct RunResult {
+    pub model: Model,
+    /// The final state (end of phase 2 if there is one).
+    pub state: State,
+    /// Phase 1.
+    pub elastic: RunReport,
+    /// Phase 2, for a scene with `[failure]`.
+    pub failure: Option<FailureResult>,
+    /// Element stresses of the final state, if the scene asks for them.
+    pub stress: Option<Vec<[f64; 6]>>,
+    /// Phase-1 frames (`output.frame_every`); the final state is not among them.
+    pub frames: Vec<Frame>,
+    pub summary: Summary,
+}
+
+/// Reads the scene's mesh; an error names the file.
+pub fn read_mesh(scene: &Scene) -> Result<Mesh, Error> {
+    let path = scene.mesh_path();
+    read_msh(&path).map_err(|e| match e {
+        Error::Mesh(source) => Error::MeshFile { path, source },
+        other => other,
+    })
+}
+
+/// Builds the model of a scene (mesh read and perturbed, springs made).
+pub fn build_model(scene: &Scene) -> Result<Model, Error> {
+    model::build(&read_mesh(scene)?, &scene.model_spec())
+}
+
+/// Runs a scene (both phases if it has `[failure]`), reporting
+/// `(step, unbalanced ratio)` every 100 steps.
+pub fn run_scene(scene: &Scene, progress: &mut dyn FnMut(usize, f64)) -> Result<RunResult, Error> {
+    run_watched(scene, &mut Progress(progress))
+}
+
+/// Runs a scene under a [`Watch`].
+pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Error> {
+    let t0 = Instant::now();
+    let model = build_model(scene)?;
+    let mut solver = Solver::new(&model, scene.solver.clone())?;
+    let mut state = State::new(&model);
+
+    // Phase 1.
+    let frame_every = if scene.output.vtk { scene.output.frame_every } else { 0 };
+    let mut frames = Vec::new();
+    let rules = StopRules {
+        tolerance: scene.solver.tolerance,
+        max_steps: scene.solver.max_steps,
+        sliding: None,
+        history_every: scene.output.history_every,
+    };
+    let mut observe = |view: &StepView| {
+        if frame_every > 0 && view.state.step % frame_every == 0 {
+            frames.push(Frame { step: view.state.step, time: view.state.time, u: view.state.u.clone() });
+        }
+        watch.step(Phase::Elastic, view)
+    };
+    let elastic = relax(&mut solver, &model, &mut state, &rules, &mut observe)?;
+    let phase1 = PhaseSummary {
+        end_state: if elastic.converged { EndState::Equilibrium } else { EndState::Undecided },
+        steps: elastic.steps,
+        unbalanced_ratio: elastic.unbalanced_ratio,
+        failed_springs: failed_springs(&state.springs.status),
+        max_displacement: max_displacement_since(&state.u, &vec![0.0; state.u.len()]),
+    };
+
+    // Phase 2.
+    let failure = match &scene.failure {
+        Some(params) => {
+            let options = failure::Options { vtk: scene.output.vtk, history_every: scene.output.history_every };
+            Some(failure::run(&mut solver, &model, &mut state, params, scene.solver.tolerance, options, watch)?)
+        }
+        None => None,
+    };
+    let phase2 = failure.as_ref().map(|f| PhaseSummary {
+        end_state: f.end,
+        steps: f.report.steps,
+        unbalanced_ratio: f.report.unbalanced_ratio,
+        failed_springs: failed_springs(&state.springs.status),
+        max_displacement: max_displacement_since(&state.u, &f.u_elastic),
+    });
+
+    let stress = scene.output.stress.then(|| model.element_stresses(&state.u));
+    let field = FieldExtremes::of(&state.u, stress.as_deref());
+    let last = phase2.as_ref().unwrap_or(&phase1);
+    let summary = Summary {
+        end_state: last.end_state,
+        converged: last.end_state == EndState::Equilibrium,
+        steps: phase1.steps + phase2.as_ref().map_or(0, |p| p.steps),
+        wall_s: t0.elapsed().as_secs_f64(),
+        dt: solver.dt(),
+        unbalanced_ratio: last.unbalanced_ratio,
+        max_abs_uz: field.max_abs_uz,
+        min_uz: field.min_uz,
+        max_abs_u: field.max_abs_u,
+        min_szz: field.min_szz,
+        failed_springs: last.failed_springs,
+        elements: model.elements.len(),
+        nodes: model.n_nodes(),
+        springs: model.springs.len(),
+        phase1: Some(phase1),
+        phase2,
+    };
+    Ok(RunResult { model, state, elastic, failure, stress, frames, summary })
+}
+
+/// Relaxes a model to equilibrium with the given settings and no watcher
+/// (benches, perf, tests): phase 1 of [`run_watched`] without the scene.
+pub fn relax_elastic(
+    model: &Model,
+    params: &crate::solver::SolverParams,
+    history_every: usize,
+) -> Result<(State, RunReport), Error> {
+    let mut solver = Solver::new(model, params.clone())?;
+    let mut state = State::new(model);
+    let rules = StopRules { tolerance: params.tolerance, max_steps: params.max_steps, sliding: None, history_every };
+    let report = relax(&mut solver, model, &mut state, &rules, &mut unobserved)?;
+    Ok((state, report))
+}
+
+/// Failed springs by kind.
+pub fn failed_springs(status: &[SpringStatus]) -> FailedSprings {
+    let mut failed = FailedSprings::default();
+    for s in status {
+        match s {
+            SpringStatus::Tension => failed.tension += 1,
+            SpringStatus::Shear => failed.shear += 1,
+            SpringStatus::Intact => {}
+        }
+    }
+    failed
+}

@@ -1,0 +1,128 @@
+//! What a model is built from besides its mesh: the model sections of a
+//! scene file (`[perturbation]`, `[[material]]`, `[joints]`, `[[interface]]`,
+//! `[[boundary]]`) and gravity. The scene parses them; [`build`](super::build)
+//! reads them through a [`ModelSpec`]. Keys and defaults are documented in
+//! the `scene` module.
+
+use serde::Deserialize;
+
+/// The model's inputs, borrowed from a scene (or made by hand in a test).
+#[derive(Debug, Clone, Copy)]
+pub struct ModelSpec<'a> {
+    pub perturbation: &'a Perturbation,
+    /// One per volume group, in scene order: material `i` is `material[i]`.
+    pub material: &'a [MaterialSection],
+    /// The default interface (index 0).
+    pub joints: &'a Joints,
+    /// Interfaces overriding the default (index `i + 1`).
+    pub interface: &'a [InterfaceSection],
+    pub boundary: &'a [Boundary],
+    /// Gravitational acceleration (m/s^2).
+    pub gravity: [f64; 3],
+}
+
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Perturbation {
+    /// Maximum offset per axis as a fraction of the local edge length (0 = off).
+    #[serde(default)]
+    pub ratio: f64,
+    #[serde(default)]
+    pub seed: u64,
+    /// Surface groups whose nodes may move only within the group's plane.
+    #[serde(default)]
+    pub keep_flat: Vec<String>,
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialSection {
+    pub group: String,
+    pub youngs_modulus: f64,
+    pub poisson_ratio: f64,
+    pub density: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum JointMode {
+    /// Node copies joined by springs (the CDEM default).
+    #[default]
+    Springs,
+    /// Shared nodes, no springs: a continuous interface.
+    Merged,
+}
+
+/// The default structural plane: every interface not listed in `[[interface]]`.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Joints {
+    #[serde(default)]
+    pub mode: JointMode,
+    /// `E_j` (Pa).
+    pub normal_modulus: Option<f64>,
+    /// `G_j` (Pa).
+    pub shear_modulus: Option<f64>,
+    /// Equivalent thickness `L` (m).
+    pub thickness: Option<f64>,
+    /// Makes these joints breakable (eq. 17-18) in the failure phase.
+    pub strength: Option<StrengthSection>,
+}
+
+/// Strength of a breakable structural plane.
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StrengthSection {
+    /// Tensile strength `T` (Pa), eq. 17.
+    pub tensile: f64,
+    /// Cohesion `c` (Pa), eq. 18.
+    pub cohesion: f64,
+    /// Friction angle `phi` (degrees, in [0, 90)), eq. 18.
+    pub friction_angle: f64,
+}
+
+impl From<StrengthSection> for crate::physics::spring::Strength {
+    fn from(s: StrengthSection) -> Self {
+        Self { tensile: s.tensile, cohesion: s.cohesion, tan_phi: s.friction_angle.to_radians().tan() }
+    }
+}
+
+/// An interface group (a surface physical group lying between elements).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct InterfaceSection {
+    pub group: String,
+    #[serde(default)]
+    pub mode: JointMode,
+    pub normal_modulus: Option<f64>,
+    pub shear_modulus: Option<f64>,
+    pub thickness: Option<f64>,
+    /// Makes this interface breakable (eq. 17-18) in the failure phase.
+    pub strength: Option<StrengthSection>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Axis {
+    X,
+    Y,
+    Z,
+}
+
+impl Axis {
+    /// Component index: x 0, y 1, z 2.
+    pub fn index(self) -> usize {
+        match self {
+            Axis::X => 0,
+            Axis::Y => 1,
+            Axis::Z => 2,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Boundary {
+    pub group: String,
+    pub fix: Vec<Axis>,
+}

@@ -1,0 +1,95 @@
+//! `summary.json`: the numbers a run is judged by. A CDEM run and the FEM
+//! reference write the same keys, so this record sits at the bottom of the
+//! layers beside [`crate::error`], plain data that every layer may fill in.
+//!
+//! A CDEM run has a `phase1` section (elastic) and, for a scene with
+//! `[failure]`, a `phase2` section (breakable joints); the top-level
+//! `end_state`, `converged`, `steps` (both phases), `unbalanced_ratio` and
+//! field extremes describe the end of the whole run.
+
+use serde::Serialize;
+
+/// How a run (or one phase of it) ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum EndState {
+    /// Converged: the unbalanced-force ratio fell below the tolerance.
+    Equilibrium,
+    /// The mass kept moving: the displacement since phase 1 passed the
+    /// sliding bound.
+    GlobalSliding,
+    /// Neither within the step budget.
+    Undecided,
+}
+
+/// Number of failed springs by kind.
+#[derive(Debug, Clone, Copy, Default, Serialize, PartialEq, Eq)]
+pub struct FailedSprings {
+    pub tension: usize,
+    pub shear: usize,
+}
+
+/// One phase of a CDEM run.
+#[derive(Debug, Clone, Serialize)]
+pub struct PhaseSummary {
+    pub end_state: EndState,
+    pub steps: usize,
+    /// The unbalanced-force ratio at the phase's last step.
+    pub unbalanced_ratio: f64,
+    pub failed_springs: FailedSprings,
+    /// Largest nodal displacement since the start of the phase (m).
+    pub max_displacement: f64,
+}
+
+/// Extremes of a displacement field (3 per node) and of element stresses.
+#[derive(Debug, Clone, Copy)]
+pub struct FieldExtremes {
+    pub max_abs_uz: f64,
+    pub min_uz: f64,
+    pub max_abs_u: f64,
+    pub min_szz: Option<f64>,
+}
+
+impl FieldExtremes {
+    pub fn of(u: &[f64], stress: Option<&[[f64; 6]]>) -> Self {
+        let uz = u.chunks(3).map(|d| d[2]);
+        Self {
+            max_abs_uz: uz.clone().map(f64::abs).fold(0.0, f64::max),
+            min_uz: uz.fold(0.0, f64::min),
+            max_abs_u: u.chunks(3).map(|d| (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()).fold(0.0, f64::max),
+            min_szz: stress.map(|s| s.iter().map(|x| x[2]).fold(f64::INFINITY, f64::min)),
+        }
+    }
+}
+
+/// `summary.json`.
+#[derive(Debug, Clone, Serialize)]
+pub struct Summary {
+    pub end_state: EndState,
+    /// `end_state == Equilibrium`.
+    pub converged: bool,
+    /// Steps of all phases (1 for the FEM).
+    pub steps: usize,
+    pub wall_s: f64,
+    /// Time step (s; 1 with mass scaling, a fictitious time; 0 for the FEM).
+    pub dt: f64,
+    /// At the last step (FEM: the relative residual).
+    pub unbalanced_ratio: f64,
+    /// Largest |u_z| over all nodes (m).
+    pub max_abs_uz: f64,
+    /// Most negative u_z (m).
+    pub min_uz: f64,
+    /// Largest displacement magnitude (m).
+    pub max_abs_u: f64,
+    /// Most compressive element sigma_zz (Pa), if stresses were computed.
+    pub min_szz: Option<f64>,
+    pub failed_springs: FailedSprings,
+    pub elements: usize,
+    pub nodes: usize,
+    pub springs: usize,
+    /// The elastic phase (CDEM runs).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub phase1: Option<PhaseSummary>,
+    /// The failure phase (scenes with `[failure]`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub phase2: Option<PhaseSummary>,
+}
