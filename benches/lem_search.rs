@@ -10,7 +10,7 @@
 use std::path::Path;
 
 use cdem::lem::{analyse, EntryExitSpec, GridSpec, LemInput, Method, Mode, SearchSpec};
-use cdem::perf::{pyslope_grid_search, LEM_CASES};
+use cdem::harness::perf::{pyslope_grid_search, LEM_CASES};
 use criterion::{criterion_group, criterion_main, Criterion};
 
 fn with_search(base: &LemInput, spec: SearchSpec, methods: &[Method]) -> LemInput {

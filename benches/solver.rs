@@ -13,7 +13,7 @@
 //! - `build_model/hex_1000`: reading, perturbing and building the CDEM model
 //!   (element operators, springs, gather lists), for the end-to-end total;
 //! - `fem_solve_scene/hex_N`: the implicit FEM reference end to end
-//!   (`cdem::fem::solve_scene`: read and perturb the mesh, assemble, sparse
+//!   (`cdem::drivers::solve_fem`: read and perturb the mesh, assemble, sparse
 //!   Cholesky, solve, residual and stresses); 10 samples.
 //!
 //! DR against FEM on the same mesh: `dr_to_1e-5 / fem_solve_scene`
@@ -30,7 +30,7 @@ use common::{meshes, slope_scene};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 
 fn build(scene: &Scene) -> Model {
-    cdem::run::build_model(scene).expect("slope model builds")
+    cdem::drivers::build_model(scene).expect("slope model builds")
 }
 
 fn step(c: &mut Criterion) {
@@ -70,7 +70,7 @@ fn relax(c: &mut Criterion) {
             b.iter(|| {
                 let mut solver = Solver::new(&model, params.clone()).expect("time step");
                 let mut state = State::new(&model);
-                let report = solver.relax(&model, &mut state, usize::MAX, 0, &mut |_, _| {}).expect("stable");
+                let report = solver.relax(&model, &mut state, usize::MAX).expect("stable");
                 assert!(report.converged, "DR did not reach 1e-5 in {} steps", report.steps);
                 steps = report.steps;
             })
@@ -86,7 +86,7 @@ fn fem(c: &mut Criterion) {
     group.sample_size(10);
     for (mesh, n_hex) in meshes() {
         let scene = slope_scene(&mesh);
-        let sol = cdem::fem::solve_scene(&scene).expect("FEM solves");
+        let sol = cdem::drivers::solve_fem(&scene).expect("FEM solves");
         let t = sol.timings;
         eprintln!(
             "fem hex_{n_hex}: {} free dofs; assemble {:.4} s, factor {:.4} s, solve {:.4} s, post {:.4} s",
@@ -94,7 +94,7 @@ fn fem(c: &mut Criterion) {
         );
         group.throughput(Throughput::Elements(n_hex as u64));
         group.bench_function(BenchmarkId::new("fem_solve_scene", format!("hex_{n_hex}")), |b| {
-            b.iter(|| cdem::fem::solve_scene(&scene).expect("FEM solves"))
+            b.iter(|| cdem::drivers::solve_fem(&scene).expect("FEM solves"))
         });
     }
     group.finish();

@@ -9,7 +9,7 @@
 use std::path::Path;
 
 use cdem::lem::{analyse, LemInput, Method};
-use cdem::perf::{pyslope_grid_search, LEM_CASES};
+use cdem::harness::perf::{pyslope_grid_search, LEM_CASES};
 
 const ROUNDS: usize = 15;
 const PER_ROUND: usize = 40;

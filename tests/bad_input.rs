@@ -20,7 +20,7 @@ fn assert_fails_naming(scene: &str, needles: &[&str]) {
     }
     assert!(!msg.contains("panicked"), "{scene}: panicked: {msg}");
     assert!(!out.exists(), "{scene}: left output behind");
-    let staging = cdem::run::staging_dir(&out);
+    let staging = cdem::output::staging_dir(&out);
     assert!(!staging.exists());
 }
 

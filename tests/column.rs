@@ -5,9 +5,9 @@
 
 use std::path::Path;
 
-use cdem::run::{run_scene, RunResult};
+use cdem::drivers::{run_scene, RunResult};
 use cdem::scene::{JointMode, Scene};
-use cdem::validation::Check;
+use cdem::harness::report::Check;
 
 // references/column.md
 const H: f64 = 40.0;
@@ -78,7 +78,7 @@ fn column_with_stiff_springs_within_one_percent() {
     let err_el = element_stress_error(&r);
     println!("springs: top u_z {uz:.5e} (exact {exact:.5e}, err {err_u:.2e}); base {:.5e} (err {err_base:.2e}); element sigma_zz max err {err_el:.2e}", base_stress(&r));
     let t = r.summary.wall_s;
-    cdem::validation::record(
+    cdem::harness::report::record(
         "column_springs",
         &[
             Check::new("column, springs E_j/L=1e11", "top u_z (m)", uz, exact, 0.01, "references/column.md", t),
@@ -138,7 +138,7 @@ fn column_with_merged_interfaces_is_exact_to_solver_tolerance() {
         "merged: top u_z {uz:.6e} (exact {exact:.6e}, err {err:.2e}); element sigma_zz max err {:.2e}",
         element_stress_error(&r)
     );
-    cdem::validation::record(
+    cdem::harness::report::record(
         "column_merged",
         &[Check::new("column, merged", "top u_z (m)", uz, exact, 1e-5, "references/column.md", r.summary.wall_s)],
     );

@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use cdem::run::run_scene;
+use cdem::drivers::run_scene;
 use cdem::scene::Scene;
 
 /// Summary (without wall time) and history of a 2000-step run of the
@@ -17,7 +17,7 @@ fn fingerprint(threads: usize) -> Vec<u64> {
     let mut bits: Vec<u64> = vec![s.steps as u64, s.max_abs_uz.to_bits(), s.min_uz.to_bits(), s.max_abs_u.to_bits()];
     bits.push(s.min_szz.unwrap().to_bits());
     bits.push(s.unbalanced_ratio.to_bits());
-    for h in &r.report.history {
+    for h in &r.elastic.history {
         bits.extend(
             [h.kinetic_energy, h.external_work, h.strain_energy, h.unbalanced_ratio, h.max_displacement]
                 .map(f64::to_bits),

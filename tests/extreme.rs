@@ -11,7 +11,7 @@ use std::path::Path;
 use cdem::mesh::adjacency::FaceAdjacency;
 use cdem::mesh::gmsh::read_msh;
 use cdem::mesh::perturb::perturb_nodes;
-use cdem::run::{run_scene, RunResult};
+use cdem::drivers::{run_scene, RunResult};
 use cdem::scene::Scene;
 
 const G: f64 = 9.81;
@@ -53,7 +53,7 @@ fn run_case(case: &'static str, reference: f64, tolerance: f64, rows: &mut Vec<R
     let scene = Scene::load(&Path::new("verification/extreme").join(format!("{case}.toml"))).unwrap();
     let r = run_scene(&scene, &mut |_, _| {}).unwrap_or_else(|e| panic!("{case}: {e}"));
     assert!(r.state.u.iter().all(|v| v.is_finite()), "{case}: non-finite displacement");
-    let ke: Vec<f64> = r.report.history.iter().map(|h| h.kinetic_energy).collect();
+    let ke: Vec<f64> = r.elastic.history.iter().map(|h| h.kinetic_energy).collect();
     let peak = ke.iter().cloned().fold(0.0, f64::max);
     assert!(ke.last().copied().unwrap_or(0.0) <= peak, "{case}: kinetic energy grew to the end");
     let ours = top_uz(&r);
@@ -106,13 +106,13 @@ fn stiff_and_extreme_cases_are_stable_and_right_or_say_not_converged() {
         }
     }
     println!("{md}");
-    cdem::validation::record(
+    cdem::harness::report::record(
         "extreme",
         &rows
             .iter()
             .filter(|r| r.converged)
             .map(|r| {
-                cdem::validation::Check::new(
+                cdem::harness::report::Check::new(
                     &format!("extreme: {}", r.case),
                     "top u_z (m)",
                     r.ours,

@@ -8,7 +8,8 @@
 use std::path::Path;
 
 use cdem::fem::element::element_matrices;
-use cdem::fem::{solve, solve_scene, FemProblem, FemSolution};
+use cdem::drivers::solve_fem as solve_scene;
+use cdem::fem::{solve, FemProblem, FemSolution};
 use cdem::mesh::adjacency::{face_nodes, FaceAdjacency};
 use cdem::mesh::gmsh::read_msh;
 use cdem::mesh::perturb::SplitMix64;
@@ -90,7 +91,7 @@ fn confined_column_settlement_and_stress_are_nodally_exact() {
 fn patch_problem(mesh: &Mesh, scene: &Scene, h: [[f64; 3]; 3]) -> FemProblem {
     let mut scene = scene.clone();
     scene.boundary.clear(); // the whole boundary is prescribed below
-    let mut p = FemProblem::from_mesh(mesh, &scene).unwrap();
+    let mut p = FemProblem::from_mesh(mesh, &scene.model_spec()).unwrap();
     p.gravity = [0.0; 3];
     let adj = FaceAdjacency::build(mesh).unwrap();
     for &(c, f) in &adj.exterior {
@@ -366,7 +367,7 @@ fn slope_displacement_and_stress_converge_under_refinement() {
         if level > 0 {
             mesh = refine_slab(&mesh);
         }
-        let sol = solve(&FemProblem::from_mesh(&mesh, &s0).unwrap()).unwrap();
+        let sol = solve(&FemProblem::from_mesh(&mesh, &s0.model_spec()).unwrap()).unwrap();
         let t = sol.timings;
         let (u, sz) = (sol.summary.max_abs_uz, sol.summary.min_szz.unwrap());
         println!(
@@ -424,7 +425,7 @@ fn displacement_inside_a_cell_interpolates_the_column() {
 fn outputs_have_the_keys_of_cdem_run() {
     let sol = solve_scene(&column()).unwrap();
     let dir = std::env::temp_dir().join(format!("cdem-fem-test-{}", std::process::id()));
-    cdem::fem::write_outputs(&sol, &dir).unwrap();
+    cdem::output::write_fem(&sol, &dir).unwrap();
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
     let keys: Vec<&str> = summary.as_object().unwrap().keys().map(|k| k.as_str()).collect();
@@ -481,7 +482,7 @@ fn fem_agrees_with_scikit_fem_on_the_unperturbed_column_and_slope() {
         for (key, v) in ours {
             let r = num(&case[key]);
             if key == "max_abs_uz" || key == "min_element_szz" {
-                checks.push(cdem::validation::Check::new(
+                checks.push(cdem::harness::report::Check::new(
                     &format!("FEM vs scikit-fem, {name}"),
                     key,
                     v,
@@ -511,7 +512,7 @@ fn fem_agrees_with_scikit_fem_on_the_unperturbed_column_and_slope() {
         println!("{name}: largest relative difference {worst:.1e}");
         // Same discretisation (trilinear hexahedra, 2x2x2 Gauss, consistent
         // load, Gauss-volume-averaged stress): agreement to round-off.
-        cdem::validation::record(&format!("fem_skfem_{}", name.replace(|c: char| !c.is_alphanumeric(), "_")), &checks);
+        cdem::harness::report::record(&format!("fem_skfem_{}", name.replace(|c: char| !c.is_alphanumeric(), "_")), &checks);
         assert!(worst < 1e-9, "{name}: cdem fem and scikit-fem differ by {worst:e}");
     }
 }

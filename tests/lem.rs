@@ -69,10 +69,10 @@ fn acads_1a_spencer_agrees_with_slide_and_is_reported_against_the_referee() {
     let c = critical(&r, Method::Spencer);
     let b = critical(&r, Method::Bishop);
     println!("ACADS 1(a) Spencer {:.5}: Slide {ACADS_SLIDE_SPENCER}, referee {ACADS_REFEREE}", c.fs);
-    cdem::validation::record(
+    cdem::harness::report::record(
         "lem_acads",
         &[
-            cdem::validation::Check::new(
+            cdem::harness::report::Check::new(
                 "ACADS 1(a)",
                 "Bishop FS vs Slide",
                 b.fs,
@@ -81,7 +81,7 @@ fn acads_1a_spencer_agrees_with_slide_and_is_reported_against_the_referee() {
                 "references/lem.md",
                 r.wall_s,
             ),
-            cdem::validation::Check::new(
+            cdem::harness::report::Check::new(
                 "ACADS 1(a)",
                 "Bishop FS vs referee",
                 b.fs,
@@ -90,7 +90,7 @@ fn acads_1a_spencer_agrees_with_slide_and_is_reported_against_the_referee() {
                 "references/lem.md",
                 r.wall_s,
             ),
-            cdem::validation::Check::new(
+            cdem::harness::report::Check::new(
                 "ACADS 1(a)",
                 "Spencer FS vs Slide",
                 c.fs,
@@ -99,7 +99,7 @@ fn acads_1a_spencer_agrees_with_slide_and_is_reported_against_the_referee() {
                 "references/lem.md",
                 r.wall_s,
             ),
-            cdem::validation::Check::new(
+            cdem::harness::report::Check::new(
                 "ACADS 1(a)",
                 "Spencer FS vs referee (1.6 % low, see lem.md)",
                 c.fs,
@@ -136,9 +136,9 @@ fn paper_slope_bishop_matches_the_papers_lem() {
     let r = analyse(&load("verification/lem/paper-slope.toml")).unwrap();
     let c = critical(&r, Method::Bishop);
     println!("paper slope Bishop {:.4} (paper 1.084), circle ({:.3}, {:.3}, {:.3})", c.fs, c.xc, c.zc, c.r);
-    cdem::validation::record(
+    cdem::harness::report::record(
         "lem_paper_slope",
-        &[cdem::validation::Check::new(
+        &[cdem::harness::report::Check::new(
             "paper slope LEM",
             "Bishop FS (tolerance: 0.01 absolute)",
             c.fs,

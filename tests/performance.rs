@@ -6,8 +6,8 @@
 
 use std::path::Path;
 
-use cdem::perf::{fit_power, headline, paper_slope, step_bytes};
-use cdem::validation::{record, Check};
+use cdem::harness::perf::{fit_power, headline, paper_slope, step_bytes};
+use cdem::harness::report::{record, Check};
 
 /// The fit recovers an exact power law.
 #[test]

@@ -68,7 +68,7 @@ fn too_large_a_ratio_is_a_typed_error_naming_the_element() {
     let mut scene = Scene::load(Path::new("verification/cases/slope/slope.toml")).unwrap();
     scene.perturbation.ratio = 0.45;
     scene.perturbation.seed = 5;
-    match cdem::run::build_model(&scene) {
+    match cdem::drivers::build_model(&scene) {
         Err(Error::Model(ModelError::PerturbationInverts { element, volume, .. })) => {
             let mesh = slope();
             assert!(mesh.cells.iter().any(|c| c.tag == element), "element {element} is a gmsh tag of the mesh");

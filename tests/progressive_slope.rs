@@ -14,9 +14,9 @@ use std::path::Path;
 
 use cdem::analysis::safety_factors;
 use cdem::analysis::slip::{from_springs, spring_points, SlipCircle};
-use cdem::output::figures::{section_contour, Patch};
-use cdem::output::section::{element_mean_displacement, front_patches};
-use cdem::progressive::{run_progressive, EndState};
+use cdem::harness::figures::{section_contour, Patch};
+use cdem::harness::section::{element_mean_displacement, front_patches};
+use cdem::drivers::{run_watched, EndState, StageSnapshots};
 use cdem::scene::Scene;
 use cdem::solver::State;
 
@@ -25,14 +25,15 @@ const CIRCLE: SlipCircle = SlipCircle { xc: 24.006, zc: 63.222, toe: [20.0, 20.0
 #[test]
 fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
     let scene = Scene::load(Path::new("verification/cases/slope-slip/slope-slip.toml")).unwrap();
-    let params = scene.failure.clone().unwrap();
-    let r = run_progressive(&scene, &params, &mut |_, _| {}).unwrap();
+    let mut snapshots = StageSnapshots::default();
+    let run = run_watched(&scene, &mut snapshots).unwrap();
+    let r = run.failure.as_ref().expect("phase 2 ran");
     let tan_phi = 18f64.to_radians().tan();
 
     // Elastic K_i per station (springs), from the end of phase 1.
-    let mut elastic = State::new(&r.model);
+    let mut elastic = State::new(&run.model);
     elastic.u = r.u_elastic.clone();
-    let pts = from_springs(&r.model, &elastic, "slip", &CIRCLE).unwrap();
+    let pts = from_springs(&run.model, &elastic.u, &elastic.springs, "slip", &CIRCLE).unwrap();
     let k = safety_factors(&pts, 16e3, tan_phi);
     let friction_only = safety_factors(&pts, 0.0, tan_phi);
     println!("elastic eq. 21: K = {:.4}; friction only (c lost): {:.4}", k.k, friction_only.k);
@@ -51,14 +52,14 @@ fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
     let zone_of = |s: f64| zones.iter().position(|z| s <= z.2 + 1e-9).unwrap_or(zones.len() - 1);
 
     // First and last failure step per zone.
-    let sp = &r.model.springs;
-    let iface = r.model.interfaces.iter().position(|i| i.name == "slip").unwrap() as u16;
+    let sp = &run.model.springs;
+    let iface = run.model.interfaces.iter().position(|i| i.name == "slip").unwrap() as u16;
     let mut first = vec![usize::MAX; zones.len()];
     let mut last = vec![0; zones.len()];
     let mut all_failed = vec![true; zones.len()];
     let mut first_step = usize::MAX;
     for s in (0..sp.len()).filter(|&s| sp.interface[s] == iface) {
-        let z = zone_of(CIRCLE.frame(r.model.x0[sp.a[s] as usize]).0);
+        let z = zone_of(CIRCLE.frame(run.model.x0[sp.a[s] as usize]).0);
         match r.failed_at[s] {
             Some(step) => {
                 first[z] = first[z].min(step);
@@ -88,7 +89,7 @@ fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
         );
     }
     // And they are where K_i (circle frame, eq. 22) is lowest.
-    let per_spring = spring_points(&r.model, &elastic, "slip", &CIRCLE).unwrap();
+    let per_spring = spring_points(&run.model, &elastic.u, &elastic.springs, "slip", &CIRCLE).unwrap();
     let ki = |p: &cdem::analysis::SurfacePoint| (p.sigma_n * tan_phi + c) / p.tau;
     let (mut first_k, mut later_k) = (Vec::new(), Vec::new());
     for (s, p) in &per_spring {
@@ -138,9 +139,9 @@ fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
     std::fs::create_dir_all("target/figures").unwrap();
     let n = r.stages.len();
     for (tag, idx) in [("early", 0), ("middle", n / 2), ("end", n - 1)] {
-        let du: Vec<f64> = r.stage_u[idx].iter().zip(&r.u_elastic).map(|(a, b)| a - b).collect();
+        let du: Vec<f64> = snapshots.u[idx].iter().zip(&r.u_elastic).map(|(a, b)| a - b).collect();
         for (comp, name) in [(0, "u_x"), (2, "u_z")] {
-            let p: Vec<Patch> = front_patches(&r.model, |e| element_mean_displacement(&r.model, &du, e, comp));
+            let p: Vec<Patch> = front_patches(&run.model, |e| element_mean_displacement(&run.model, &du, e, comp));
             let title = format!("Phase 2, step {}: {name} since phase 1", r.stages[idx].step);
             section_contour(
                 Path::new(&format!("target/figures/fig10-{tag}-{name}.png")),

@@ -87,7 +87,7 @@ fn joint_strengths_are_checked_and_named() {
 #[test]
 fn a_group_the_mesh_lacks_is_named_with_its_key() {
     let scene = parse(&GOOD.replace("group = \"bottom\"", "group = \"floor\"")).unwrap();
-    match cdem::run::build_model(&scene) {
+    match cdem::drivers::build_model(&scene) {
         Err(Error::Model(ModelError::UnknownGroup { key, group, .. })) => {
             assert_eq!(key, "boundary[0].group");
             assert_eq!(group, "floor");
@@ -99,7 +99,7 @@ fn a_group_the_mesh_lacks_is_named_with_its_key() {
 #[test]
 fn a_missing_mesh_file_names_the_path() {
     let scene = parse(&GOOD.replace("column.msh", "no-such.msh")).unwrap();
-    let err = cdem::run::build_model(&scene).err().unwrap();
+    let err = cdem::drivers::build_model(&scene).err().unwrap();
     assert!(matches!(err, Error::Io { .. }), "{err}");
     assert!(err.to_string().contains("no-such.msh"));
 }

@@ -20,11 +20,11 @@ fn slide(theta_deg: f64, t_end: f64) -> (f64, f64) {
     let mut scene = Scene::load(Path::new("tests/fixtures/block-on-plane.toml")).unwrap();
     let th = theta_deg.to_radians();
     scene.loads.gravity = [G * th.sin(), 0.0, -G * th.cos()];
-    let model = cdem::run::build_model(&scene).unwrap();
+    let model = cdem::drivers::build_model(&scene).unwrap();
     // Phase 1: bonded, static.
     let mut solver = Solver::new(&model, scene.solver.clone()).unwrap();
     let mut state = State::new(&model);
-    let rep = solver.relax(&model, &mut state, 100, 0, &mut |_, _| {}).unwrap();
+    let rep = solver.relax(&model, &mut state, 100).unwrap();
     assert!(rep.converged);
     // Phase 2: physical time, frictional contact, undamped.
     let mut params = scene.solver.clone();
@@ -38,11 +38,11 @@ fn slide(theta_deg: f64, t_end: f64) -> (f64, f64) {
     let block: Vec<usize> = (0..model.n_nodes())
         .filter(|&i| model.x0[i][2] > 1.0 + 1e-9 || (model.x0[i][2] > 1.0 - 1e-9 && is_block_copy(&model, i)))
         .collect();
-    let steps = (t_end / dynamic.dt).round() as usize;
+    let steps = (t_end / dynamic.dt()).round() as usize;
     for _ in 0..steps {
         dynamic.step(&model, &mut state).unwrap();
     }
-    let t = steps as f64 * dynamic.dt;
+    let t = steps as f64 * dynamic.dt();
     let x = block.iter().map(|&i| state.u[3 * i] - u0[3 * i]).sum::<f64>() / block.len() as f64;
     (x, t)
 }
@@ -72,9 +72,9 @@ fn block_above_the_friction_angle_slides_with_the_coulomb_acceleration() {
     let (x, t) = slide(30.0, 0.5);
     let a = 2.0 * x / (t * t);
     println!("theta 30 deg, phi 20 deg: a = {a:.4} m/s^2 (analytic {analytic:.4})");
-    cdem::validation::record(
+    cdem::harness::report::record(
         "sliding_block",
-        &[cdem::validation::Check::new(
+        &[cdem::harness::report::Check::new(
             "block on plane, theta 30, phi 20",
             "acceleration (m/s^2)",
             a,

@@ -14,10 +14,10 @@ use cdem::analysis::slip::{from_springs, from_stresses, SlipCircle};
 use cdem::analysis::{safety_factors, sign_segments, Segment, SurfacePoint};
 use cdem::lem::Circle;
 use cdem::lem::{evaluate_circle, LemInput};
-use cdem::output::figures::{line_plot, section_contour, Scale, Series};
-use cdem::output::section::element_mean_displacement;
+use cdem::harness::figures::{line_plot, section_contour, Scale, Series};
+use cdem::harness::section::element_mean_displacement;
 use cdem::scene::Scene;
-use cdem::validation::Check;
+use cdem::harness::report::Check;
 
 /// The circle of slope-slip.geo (centre, through the toe).
 const XC: f64 = 24.006;
@@ -44,14 +44,14 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
     let fs_lem = evaluate_circle(&lem.section, Circle { xc: XC, zc: ZC, r }, 50).unwrap().bishop.unwrap();
 
     let scene = Scene::load(Path::new("verification/cases/slope-slip/slope-slip.toml")).unwrap();
-    let run = cdem::run::run_scene(&scene, &mut |_, _| {}).unwrap();
+    let run = cdem::drivers::run_scene(&scene, &mut |_, _| {}).unwrap();
     assert!(run.summary.converged);
-    let fem = cdem::fem::solve_scene(&scene).unwrap();
+    let fem = cdem::drivers::solve_fem(&scene).unwrap();
     let mesh = cdem::mesh::gmsh::read_msh(&scene.mesh_path()).unwrap();
     let circle = SlipCircle { xc: XC, zc: ZC, toe: TOE };
     let tan_phi = PHI_DEG.to_radians().tan();
 
-    let springs = from_springs(&run.model, &run.state, "slip", &circle).unwrap();
+    let springs = from_springs(&run.model, &run.state.u, &run.state.springs, "slip", &circle).unwrap();
     let cdem_stress =
         from_stresses(&mesh, &run.model.mesh_coords, "slip", &circle, run.stress.as_ref().unwrap()).unwrap();
     let fem_stress = from_stresses(&mesh, &fem.coords, "slip", &circle, &fem.stress).unwrap();
@@ -65,7 +65,7 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
     println!("eq. 21 FEM stresses: {:.4} ({:+.2} %)", k_fem.k, 100.0 * rel(k_fem.k));
 
     let t = run.summary.wall_s;
-    cdem::validation::record(
+    cdem::harness::report::record(
         "slip_surface",
         &[
             Check::new(
@@ -129,7 +129,7 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
     // Fig. 9: the surface on the section, and K_i from toe to crest.
     std::fs::create_dir_all("target/figures").unwrap();
     let patches =
-        cdem::output::section::front_patches(&run.model, |e| element_mean_displacement(&run.model, &run.state.u, e, 2));
+        cdem::harness::section::front_patches(&run.model, |e| element_mean_displacement(&run.model, &run.state.u, e, 2));
     let arc: Vec<(f64, f64)> = (0..=100)
         .map(|k| {
             let a0 = (TOE[1] - ZC).atan2(TOE[0] - XC);

@@ -8,15 +8,15 @@
 use std::path::Path;
 
 use cdem::analysis::compare::relative_l2_displacement;
-use cdem::run::run_scene;
+use cdem::drivers::run_scene;
 use cdem::scene::Scene;
-use cdem::validation::Check;
+use cdem::harness::report::Check;
 
 #[test]
 fn paper_slope_cdem_matches_fem_on_the_same_mesh() {
     let scene = Scene::load(Path::new("verification/cases/slope/slope.toml")).unwrap();
     let r = run_scene(&scene, &mut |_, _| {}).unwrap();
-    let fem = cdem::fem::solve_scene(&scene).unwrap();
+    let fem = cdem::drivers::solve_fem(&scene).unwrap();
     let (c, f) = (&r.summary, &fem.summary);
     assert!(c.converged && c.unbalanced_ratio < scene.solver.tolerance);
     let l2 = relative_l2_displacement(&r.model, &r.state.u, &fem.u);
@@ -36,7 +36,7 @@ fn paper_slope_cdem_matches_fem_on_the_same_mesh() {
     );
     println!("relative L2 error of the displacement field: {:.3} %", 100.0 * l2);
     let t = c.wall_s;
-    cdem::validation::record(
+    cdem::harness::report::record(
         "slope_elastic",
         &[
             Check::new(

@@ -10,7 +10,7 @@ use cdem::SolveError;
 
 fn column() -> (Scene, cdem::model::Model) {
     let scene = Scene::load(Path::new("verification/cases/column/column.toml")).unwrap();
-    let model = cdem::run::build_model(&scene).unwrap();
+    let model = cdem::drivers::build_model(&scene).unwrap();
     (scene, model)
 }
 
@@ -21,9 +21,9 @@ fn a_step_past_the_stability_limit_is_caught_as_blow_up() {
         let mut params = scene.solver.clone();
         params.damping = damping;
         let mut solver = Solver::new(&model, params).unwrap();
-        solver.dt *= 1.5; // beyond 2 / omega_max for the automatic safety 0.9
+        solver.set_time_step(solver.dt() * 1.5); // beyond 2 / omega_max for the automatic safety 0.9
         let mut state = State::new(&model);
-        let err = solver.relax(&model, &mut state, 10, 0, &mut |_, _| {}).unwrap_err();
+        let err = solver.relax(&model, &mut state, 10).unwrap_err();
         match err {
             SolveError::Unstable { step, node, .. } => {
                 assert!(step < 1000, "{damping:?}: caught late, at step {step}");
@@ -46,7 +46,7 @@ fn automatic_step_is_stable_with_every_damping_on_the_column() {
         params.max_steps = 3000;
         let mut solver = Solver::new(&model, params).unwrap();
         let mut state = State::new(&model);
-        let rep = solver.relax(&model, &mut state, 10, 0, &mut |_, _| {}).unwrap();
+        let rep = solver.relax(&model, &mut state, 10).unwrap();
         let ke = rep.history.iter().map(|h| h.kinetic_energy).collect::<Vec<_>>();
         assert!(ke.iter().all(|k| k.is_finite()));
     }
@@ -58,7 +58,7 @@ fn non_finite_state_names_step_and_node() {
     let mut solver = Solver::new(&model, scene.solver.clone()).unwrap();
     let mut state = State::new(&model);
     state.u[3 * 17 + 1] = f64::NAN;
-    let err = solver.relax(&model, &mut state, 10, 0, &mut |_, _| {}).unwrap_err();
+    let err = solver.relax(&model, &mut state, 10).unwrap_err();
     assert!(matches!(err, SolveError::NonFinite { step: 1, .. }), "{err}");
 }
 
@@ -69,7 +69,7 @@ fn running_out_of_steps_is_reported_not_converged() {
     params.max_steps = 50;
     let mut solver = Solver::new(&model, params).unwrap();
     let mut state = State::new(&model);
-    let rep = solver.relax(&model, &mut state, 10, 0, &mut |_, _| {}).unwrap();
+    let rep = solver.relax(&model, &mut state, 10).unwrap();
     assert!(!rep.converged);
     assert_eq!(rep.steps, 50);
     assert!(rep.unbalanced_ratio > 1e-7);

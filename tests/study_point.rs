@@ -6,12 +6,12 @@
 
 #[test]
 fn column_point_of_the_study_fem_exact_cdem_within_one_percent() {
-    let (cdem, fem) = cdem::study::column_base_point().unwrap();
+    let (cdem, fem) = cdem::harness::study::column_base_point().unwrap();
     println!("study column point: CDEM L2 error {cdem:.3e}, FEM {fem:.3e}");
-    cdem::validation::record(
+    cdem::harness::report::record(
         "study_point",
         &[
-            cdem::validation::Check::new(
+            cdem::harness::report::Check::new(
                 "study: column 10 layers",
                 "CDEM relative L2 error of u",
                 cdem,
@@ -20,7 +20,7 @@ fn column_point_of_the_study_fem_exact_cdem_within_one_percent() {
                 "references/column.md",
                 0.0,
             ),
-            cdem::validation::Check::new(
+            cdem::harness::report::Check::new(
                 "study: column 10 layers",
                 "FEM relative L2 error of u",
                 fem,

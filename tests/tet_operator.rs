@@ -11,7 +11,7 @@ use cdem::mesh::perturb::SplitMix64;
 use cdem::mesh::shape::{cross, CellKind};
 use cdem::model::ELEMENT_SLOT;
 use cdem::physics::element::{element_force, element_operators};
-use cdem::physics::tet_operator::{tet_element_force, tet_operator, TetOperators, TetTopology};
+use cdem::physics::tet_operator::{tet_element_force, tet_operator, TetTopology};
 use cdem::scene::Scene;
 use cdem::solver::forces;
 use common::{perturbed, rock, UNIT_HEX, UNIT_PRISM, UNIT_TET};
@@ -92,7 +92,7 @@ fn per_tet_rigid_motion_gives_zero_force() {
 fn per_tet_pass_equals_condensed_pass_on_the_paper_slope() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("verification/cases/slope/slope.toml");
     let scene = Scene::load(&path).unwrap();
-    let model = cdem::run::build_model(&scene).unwrap();
+    let model = cdem::drivers::build_model(&scene).unwrap();
     let el = &model.elements;
     let ops = model.tet_operators().unwrap();
     let u: Vec<f64> = (0..3 * model.n_nodes()).map(|k| 1e-3 * (0.37 * k as f64).sin()).collect();

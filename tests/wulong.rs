@@ -30,10 +30,11 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 use cdem::model::Model;
-use cdem::output::figures::{section_contour, Patch};
-use cdem::output::section::{element_mean_displacement, front_patches};
+use cdem::harness::figures::{section_contour, Patch};
+use cdem::harness::section::{element_mean_displacement, front_patches};
 use cdem::physics::spring::SpringStatus;
-use cdem::progressive::{run_progressive, EndState, ProgressiveResult};
+use cdem::drivers::{run_watched, EndState, Stage, StageSnapshots};
+use cdem::solver::{RunReport, State};
 use cdem::scene::Scene;
 
 /// The toe and the slope height of wulong.geo (the lattice crest is at z = 85.3 m).
@@ -125,6 +126,36 @@ fn opening(model: &Model, u: &[f64], face: &Face) -> f64 {
         / face.springs.len() as f64
 }
 
+/// Both phases, with the displacement kept at every stage.
+struct ProgressiveResult {
+    model: Model,
+    elastic: RunReport,
+    u_elastic: Vec<f64>,
+    state: State,
+    stages: Vec<Stage>,
+    stage_u: Vec<Vec<f64>>,
+    failed_at: Vec<Option<usize>>,
+    end: EndState,
+    phase2_steps: usize,
+}
+
+fn run_progressive(scene: &Scene) -> ProgressiveResult {
+    let mut snapshots = StageSnapshots::default();
+    let run = run_watched(scene, &mut snapshots).unwrap();
+    let f = run.failure.expect("phase 2 ran");
+    ProgressiveResult {
+        model: run.model,
+        elastic: run.elastic,
+        u_elastic: f.u_elastic,
+        state: run.state,
+        stages: f.stages,
+        stage_u: snapshots.u,
+        failed_at: f.failed_at,
+        end: f.end,
+        phase2_steps: f.report.steps,
+    }
+}
+
 fn failed_by(r: &ProgressiveResult, face: &Face, step: usize) -> bool {
     face.springs.iter().all(|&s| r.failed_at[s].is_some_and(|at| at <= step))
 }
@@ -169,8 +200,7 @@ fn element_motion(model: &Model, u: &[f64], u0: &[f64], e: usize) -> f64 {
 fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_water() {
     let t0 = std::time::Instant::now();
     let scene = Scene::load(Path::new("verification/cases/wulong/wulong.toml")).unwrap();
-    let params = scene.failure.clone().unwrap();
-    let r = run_progressive(&scene, &params, &mut |_, _| {}).unwrap();
+    let r = run_progressive(&scene);
     let (model, sp) = (&r.model, &r.model.springs);
     println!(
         "{} elements, {} springs; phase 1: {} steps (converged {}); phase 2: {:?} after {} steps; {:.1} s",

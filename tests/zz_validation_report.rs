@@ -6,12 +6,12 @@
 
 #[test]
 fn validation_report() {
-    let recorded = cdem::validation::recorded();
+    let recorded = cdem::harness::report::recorded();
     let newest = recorded.iter().map(|r| r.1).fold(f64::INFINITY, f64::min);
     let (fresh, stale): (Vec<_>, Vec<_>) = recorded.into_iter().partition(|r| r.1 - newest < 3600.0);
-    let rows: Vec<cdem::validation::Check> = fresh.iter().flat_map(|r| r.2.clone()).collect();
+    let rows: Vec<cdem::harness::report::Check> = fresh.iter().flat_map(|r| r.2.clone()).collect();
     let mut md = format!("# Validation report\n\n{} checks from {} tests.\n\n", rows.len(), fresh.len());
-    md.push_str(&cdem::validation::markdown_table(&rows));
+    md.push_str(&cdem::harness::report::markdown_table(&rows));
     if !stale.is_empty() {
         md.push_str(&format!(
             "\nStale (not recorded in this run): {:?}\n",

@@ -9,10 +9,10 @@ fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// The committed paper-slope meshes (`cdem::perf::SLOPE_MESHES`), coarse to
+/// The committed paper-slope meshes (`cdem::harness::perf::SLOPE_MESHES`), coarse to
 /// fine, with their hexahedron counts (1000 refine^2): 250, 1000, 4000, 16000.
 pub fn meshes() -> Vec<(PathBuf, usize)> {
-    cdem::perf::SLOPE_MESHES
+    cdem::harness::perf::SLOPE_MESHES
         .iter()
         .map(|&(refine, path)| (root().join(path), (1000.0 * refine * refine) as usize))
         .collect()
@@ -28,5 +28,5 @@ pub fn slope_scene(mesh: &Path) -> Scene {
 /// The paper slope's model with another mesh.
 #[allow(dead_code)] // not every bench builds from a mesh name
 pub fn slope_model(mesh: &Path) -> Model {
-    cdem::run::build_model(&slope_scene(mesh)).expect("slope model builds")
+    cdem::drivers::build_model(&slope_scene(mesh)).expect("slope model builds")
 }

@@ -13,7 +13,7 @@ use crate::mesh::Mesh;
 use crate::model::{self, Model};
 use crate::physics::spring::SpringStatus;
 use crate::scene::Scene;
-use crate::solver::relax::{max_displacement_since, unobserved};
+use crate::solver::relax::max_displacement_since;
 use crate::solver::{relax, RunReport, Solver, State, StepView, StopRules};
 use crate::summary::{EndState, FailedSprings, FieldExtremes, PhaseSummary, Summary};
 
@@ -174,8 +174,7 @@ pub fn relax_elastic(
 ) -> Result<(State, RunReport), Error> {
     let mut solver = Solver::new(model, params.clone())?;
     let mut state = State::new(model);
-    let rules = StopRules { tolerance: params.tolerance, max_steps: params.max_steps, sliding: None, history_every };
-    let report = relax(&mut solver, model, &mut state, &rules, &mut unobserved)?;
+    let report = solver.relax(model, &mut state, history_every)?;
     Ok((state, report))
 }
 

@@ -132,6 +132,14 @@ impl Solver {
         self.dt = dt;
     }
 
+    /// Relaxes `state` to this solver's own tolerance within its step budget
+    /// (`params`), without an observer: [`relax()`] with those rules.
+    pub fn relax(&mut self, model: &Model, state: &mut State, history_every: usize) -> Result<RunReport, SolveError> {
+        let rules =
+            StopRules { tolerance: self.params.tolerance, max_steps: self.params.max_steps, sliding: None, history_every };
+        relax::relax(self, model, state, &rules, &mut relax::unobserved)
+    }
+
     pub fn inertia(&self) -> &Inertia {
         &self.inertia
     }
