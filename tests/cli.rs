@@ -35,7 +35,8 @@ fn run_writes_summary_history_and_vtk_frames() {
     assert_eq!(summary["converged"], true);
     let history = std::fs::read_to_string(out.join("history.csv")).unwrap();
     assert!(
-        history.starts_with("step,time,kinetic_energy,external_work,strain_energy,unbalanced_ratio,max_displacement")
+        history
+            .starts_with("phase,step,time,kinetic_energy,external_work,strain_energy,unbalanced_ratio,max_displacement")
     );
     let pvd = std::fs::read_to_string(out.join("run.pvd")).unwrap();
     assert!(pvd.contains("step-00000100.vtu") && pvd.contains("final.vtu"));
@@ -44,6 +45,85 @@ fn run_writes_summary_history_and_vtk_frames() {
     assert!(std::fs::read_dir(&out).unwrap().all(|e| !e.unwrap().file_name().to_string_lossy().ends_with(".partial")));
     let _ = std::fs::remove_dir_all(&out);
     let _ = std::fs::remove_file(&scene);
+}
+
+/// `cdem run` on a scene with `[failure]`: the paper slope whose slip circle
+/// is breakable (c = 16 kPa, phi = 18 deg). The summary has both phases and
+/// the end state at the top; the history covers both phases; the phase-2
+/// tables agree with the summary; every file is in `--out`, none elsewhere.
+#[test]
+fn run_of_a_failure_scene_writes_both_phases_and_the_end_state() {
+    let out = temp_dir("failure");
+    let o = Command::new(env!("CARGO_BIN_EXE_cdem"))
+        .args(["run", "verification/cases/slope-slip/slope-slip.toml", "--out", out.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(out.join("summary.json")).unwrap();
+    assert!(text.trim_start().starts_with("{\n  \"end_state\": \"GlobalSliding\""), "end_state first:\n{text}");
+    let s: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let (p1, p2) = (&s["phase1"], &s["phase2"]);
+    assert_eq!(p1["end_state"], "Equilibrium");
+    assert!(p1["unbalanced_ratio"].as_f64().unwrap() < 1e-5);
+    assert_eq!(p2["end_state"], "GlobalSliding");
+    assert_eq!(s["converged"], false);
+    let steps = |v: &serde_json::Value| v["steps"].as_u64().unwrap();
+    assert_eq!(steps(&s), steps(p1) + steps(p2), "top-level steps are both phases'");
+    assert_eq!(s["unbalanced_ratio"], p2["unbalanced_ratio"], "the top-level ratio is the end's, not phase 1's");
+    assert!(p2["unbalanced_ratio"].as_f64().unwrap() > 1e-5, "a sliding mass is out of balance");
+    assert!(p2["max_displacement"].as_f64().unwrap() > 0.5, "past the sliding bound of the scene");
+    let failed = |v: &serde_json::Value| v["failed_springs"]["tension"].as_u64().unwrap() + v["failed_springs"]["shear"].as_u64().unwrap();
+    assert_eq!(failed(p1), 0, "no spring fails in the elastic phase");
+    assert!(failed(p2) > 0);
+    assert_eq!(s["failed_springs"], p2["failed_springs"]);
+
+    // history.csv: phase 1 rows, then phase 2 rows with later steps.
+    let history = std::fs::read_to_string(out.join("history.csv")).unwrap();
+    let rows: Vec<(u64, u64)> = history
+        .lines()
+        .skip(1)
+        .map(|l| {
+            let mut f = l.split(',');
+            (f.next().unwrap().parse().unwrap(), f.next().unwrap().parse().unwrap())
+        })
+        .collect();
+    let last1 = rows.iter().filter(|r| r.0 == 1).map(|r| r.1).max().unwrap();
+    let first2 = rows.iter().filter(|r| r.0 == 2).map(|r| r.1).min().unwrap();
+    assert_eq!(last1, steps(p1), "phase 1's history ends at its last step");
+    assert!(first2 > last1 && rows.windows(2).all(|w| w[0].0 <= w[1].0 && w[0].1 < w[1].1));
+
+    // stages.csv: the last stage is the last step of phase 2, with the summary's counts.
+    let stages = std::fs::read_to_string(out.join("stages.csv")).unwrap();
+    let mut lines = stages.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "step,failed_tension,failed_shear,max_displacement,kinetic_energy,unbalanced_ratio"
+    );
+    let last: Vec<&str> = lines.last().unwrap().split(',').collect();
+    assert_eq!(last[0].parse::<u64>().unwrap(), steps(p2));
+    assert_eq!(last[1].parse::<u64>().unwrap(), p2["failed_springs"]["tension"].as_u64().unwrap());
+    assert_eq!(last[2].parse::<u64>().unwrap(), p2["failed_springs"]["shear"].as_u64().unwrap());
+
+    // failed_springs.csv: one row per failed spring (a failed spring stays failed).
+    let failed_csv = std::fs::read_to_string(out.join("failed_springs.csv")).unwrap();
+    assert!(failed_csv.starts_with("spring,first_failure_step,kind,x,y,z\n"));
+    assert_eq!(failed_csv.lines().count() as u64 - 1, failed(p2));
+
+    // Frames where the failure state changed: fewer than the stages, the last one the end.
+    let pvd = std::fs::read_to_string(out.join("failure.pvd")).unwrap();
+    let frames = pvd.matches("<DataSet").count();
+    assert!(frames >= 2 && frames < stages.lines().count() - 1, "{frames} frames");
+    assert!(pvd.contains(&format!("stage-{:08}.vtu", steps(p2))));
+    for f in ["run.pvd", "final.vtu"] {
+        assert!(out.join(f).exists(), "{f}");
+    }
+    let parent = out.parent().unwrap();
+    let stray = std::fs::read_dir(parent)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .any(|e| e.file_name().to_string_lossy().contains(&format!(".{}.partial", out.file_name().unwrap().to_string_lossy())));
+    assert!(!stray, "the staging directory is removed");
+    let _ = std::fs::remove_dir_all(&out);
 }
 
 #[test]
