@@ -46,7 +46,7 @@ import pyslope as ps  # noqa: E402
 CASES = {
     "acads_1a": (10.0, 20.0, 3.0, 19.6, 20.0, 5.0, (30.0, 25.0), (50.0, 35.0)),
     "paper_slope": (20.0, 36.0, 16.0, 18.0, 20.6, 20.0, (20.0, 20.0), (56.0, 40.0)),
-    # DESIGN.md section 3 quotes pySlope 1.064 for a 30 deg slope of the same height.
+    # docs/method.md section 3 quotes pySlope 1.064 for a 30 deg slope of the same height.
     "paper_30deg": (20.0, 20.0 / math.tan(math.radians(30.0)), 16.0, 18.0, 20.6, 20.0, (20.0, 20.0), (20.0 + 20.0 / math.tan(math.radians(30.0)), 40.0)),
 }
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Render a `cdem run` / `cdem fem` VTK frame to a PNG, off screen.
 
-Reference viewer for the VTK output of this project (DESIGN.md section 5):
+Reference viewer for the VTK output of this project (docs/method.md section 5):
 the mesh warped by its displacement, coloured by |u| or by a cell field
 (`szz`, ...), and optionally the "opened joints": CDEM gives every element its
 own copy of each corner node, so copies that share a reference position but

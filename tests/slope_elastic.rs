@@ -1,4 +1,4 @@
-//! The paper's elastic slope (DESIGN.md section 3, Figs. 5-7): CDEM with
+//! The paper's elastic slope (docs/method.md section 3, Figs. 5-7): CDEM with
 //! perturbed nodes and springs on every interface, by dynamic relaxation,
 //! against the implicit FEM (trilinear hexahedra) on the same perturbed mesh:
 //! max |u_z| and min sigma_zz within 1 %, and the relative L2 error of the

@@ -1,4 +1,4 @@
-//! The spring force law, eq. 15-18 (DESIGN.md section 2), on hand-worked values.
+//! The spring force law, eq. 15-18 (docs/method.md section 2), on hand-worked values.
 
 use cdem::physics::spring::{
     mohr_coulomb, spring_force, spring_forces, spring_stiffness, tension_cutoff, SpringState, Springs,

@@ -1,5 +1,5 @@
 //! Analyses of a solved state: the stress-based safety factor on a slip
-//! surface (paper eq. 19-22, DESIGN.md section 4) and the sign segments of the
+//! surface (paper eq. 19-22, docs/method.md section 4) and the sign segments of the
 //! per-point factors K_i.
 
 pub mod compare;

@@ -8,7 +8,7 @@
 //! - driving shear `tau = -t . (sigma n)`: `sigma n` is the traction the
 //!   ground exerts on the mass, so its component against `t` is the shear the
 //!   mass exerts on its base in the sliding direction (positive where the
-//!   mass pushes down-slope). DESIGN.md writes `t . (sigma n)` "in the sliding
+//!   mass pushes down-slope). docs/method.md (section 2.10) writes `t . (sigma n)` "in the sliding
 //!   direction"; this is that quantity with the sign that makes it positive
 //!   when it drives sliding;
 //! - resisting force `R_i = (sigma_n tan(phi) + c) A_i` (eq. 19), driving

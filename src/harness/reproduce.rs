@@ -244,7 +244,8 @@ pub fn reproduce(out: &Path, regenerate: bool, progress: &mut dyn FnMut(&str)) -
 
     // 5. Eq. 21 and K_i on the slip circle (Fig. 9).
     progress("eq. 21 on the slip circle");
-    let slip_scene = Scene::load(Path::new("verification/cases/slope-slip/slope-slip.toml"))?;
+    let mut slip_scene = Scene::load(Path::new("verification/cases/slope-slip/slope-slip.toml"))?;
+    slip_scene.failure = None; // the elastic state: phase 1 only
     let rs = run_scene(&slip_scene, &mut |_, _| {})?;
     let fem_s = crate::drivers::solve_fem(&slip_scene)?;
     let mesh = crate::mesh::gmsh::read_msh(&slip_scene.mesh_path())?;

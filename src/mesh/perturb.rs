@@ -1,5 +1,5 @@
 //! Stochastic structural planes: seeded random perturbation of the nodes of
-//! the continuous mesh (DESIGN.md section 2).
+//! the continuous mesh (docs/method.md section 2).
 //!
 //! Each node moves by an independent uniform offset in `[-r h, r h]` per axis,
 //! `h` the length of its shortest incident edge and `r` the ratio. A node on

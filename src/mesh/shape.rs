@@ -1,5 +1,5 @@
 //! Reference shapes of the supported cells (gmsh node order) and the
-//! polyhedron -> tetrahedra decomposition of DESIGN.md section 2.
+//! polyhedron -> tetrahedra decomposition of docs/method.md section 2.
 //!
 //! Every face is listed with its corners counter-clockwise seen from outside
 //! (right-hand rule gives the outward normal). A face edge `(a, b)` with the

@@ -1,6 +1,6 @@
 // Laterally confined rock column: 4 m x 4 m (x, y) x 40 m (z), 2 x 2 x 10
 // hexahedra. Units m. Used to check the self-weight solution
-// (sigma_zz = -rho g z at the base, DESIGN.md section 3).
+// (sigma_zz = -rho g z at the base, docs/method.md section 3).
 Mesh.MshFileVersion = 4.1;
 
 Point(1) = {0, 0, 0};

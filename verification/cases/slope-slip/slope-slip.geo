@@ -1,4 +1,4 @@
-// The paper slope (DESIGN.md section 3) with the LEM critical slip circle as a
+// The paper slope (docs/method.md section 3) with the LEM critical slip circle as a
 // conforming element interface "slip", as the paper did for eq. 21 and the
 // progressive-failure run. The circle is the Bishop critical circle of
 // `cdem lem verification/lem/paper-slope.toml` (c = 16 kPa, phi = 18 deg,

@@ -1,4 +1,4 @@
-// The paper's slope (DESIGN.md section 3): a plane-strain slab, one element
+// The paper's slope (docs/method.md section 3): a plane-strain slab, one element
 // thick. Section in the x-z plane (m):
 //   (0,0) (80,0) (80,40) (56,40) (20,20) (0,20)
 // 80 m long, base 20 m thick, slope 20 m high at 1V:1.8H from the toe (20,20)

@@ -1,4 +1,4 @@
-// Wulong landslide (1 May 2001, Chongqing; paper Figs. 11-14, DESIGN.md section 3):
+// Wulong landslide (1 May 2001, Chongqing; paper Figs. 11-14, docs/method.md section 3):
 // a plane-strain slab (x-z section, one element thick in y, 0..2 m) of a steep layered
 // rock slope whose element faces follow the two joint sets.
 //
