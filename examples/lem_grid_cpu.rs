@@ -8,8 +8,8 @@
 
 use std::path::Path;
 
-use cdem::lem::{analyse, LemInput, Method};
 use cdem::harness::perf::{pyslope_grid_search, LEM_CASES};
+use cdem::lem::{analyse, LemInput, Method};
 
 const ROUNDS: usize = 15;
 const PER_ROUND: usize = 40;

@@ -18,6 +18,13 @@
 //! # Ok::<(), cdem::Error>(())
 //! ```
 
+// `!(x > 0.0)` is this crate's way to say "not a positive number, NaN
+// included"; the partial_cmp form clippy suggests hides that.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+// Component loops (`for d in 0..3 { u[d] += ... }`) read as the equations
+// they implement; iterator chains over zipped arrays would not.
+#![allow(clippy::needless_range_loop)]
+
 // The layers, bottom up; a module imports only from layers below its own
 // (tests/layering.rs checks it):
 //   error, summary -> mesh -> physics -> model -> solver | fem | lem | analysis

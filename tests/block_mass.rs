@@ -5,8 +5,8 @@
 use std::path::Path;
 
 use cdem::analysis::compare::relative_l2_between_copies;
-use cdem::model::Model;
 use cdem::drivers::{build_model, run_scene};
+use cdem::model::Model;
 use cdem::scene::Scene;
 use cdem::solver::block_mass::BlockMass;
 use cdem::solver::{Solver, SolverParams, State};

@@ -34,10 +34,8 @@ fn run_writes_summary_history_and_vtk_frames() {
     }
     assert_eq!(summary["converged"], true);
     let history = std::fs::read_to_string(out.join("history.csv")).unwrap();
-    assert!(
-        history
-            .starts_with("phase,step,time,kinetic_energy,external_work,strain_energy,unbalanced_ratio,max_displacement")
-    );
+    assert!(history
+        .starts_with("phase,step,time,kinetic_energy,external_work,strain_energy,unbalanced_ratio,max_displacement"));
     let pvd = std::fs::read_to_string(out.join("run.pvd")).unwrap();
     assert!(pvd.contains("step-00000100.vtu") && pvd.contains("final.vtu"));
     let vtu = std::fs::read_to_string(out.join("final.vtu")).unwrap();
@@ -72,7 +70,9 @@ fn run_of_a_failure_scene_writes_both_phases_and_the_end_state() {
     assert_eq!(s["unbalanced_ratio"], p2["unbalanced_ratio"], "the top-level ratio is the end's, not phase 1's");
     assert!(p2["unbalanced_ratio"].as_f64().unwrap() > 1e-5, "a sliding mass is out of balance");
     assert!(p2["max_displacement"].as_f64().unwrap() > 0.5, "past the sliding bound of the scene");
-    let failed = |v: &serde_json::Value| v["failed_springs"]["tension"].as_u64().unwrap() + v["failed_springs"]["shear"].as_u64().unwrap();
+    let failed = |v: &serde_json::Value| {
+        v["failed_springs"]["tension"].as_u64().unwrap() + v["failed_springs"]["shear"].as_u64().unwrap()
+    };
     assert_eq!(failed(p1), 0, "no spring fails in the elastic phase");
     assert!(failed(p2) > 0);
     assert_eq!(s["failed_springs"], p2["failed_springs"]);
@@ -118,10 +118,9 @@ fn run_of_a_failure_scene_writes_both_phases_and_the_end_state() {
         assert!(out.join(f).exists(), "{f}");
     }
     let parent = out.parent().unwrap();
-    let stray = std::fs::read_dir(parent)
-        .unwrap()
-        .filter_map(|e| e.ok())
-        .any(|e| e.file_name().to_string_lossy().contains(&format!(".{}.partial", out.file_name().unwrap().to_string_lossy())));
+    let stray = std::fs::read_dir(parent).unwrap().filter_map(|e| e.ok()).any(|e| {
+        e.file_name().to_string_lossy().contains(&format!(".{}.partial", out.file_name().unwrap().to_string_lossy()))
+    });
     assert!(!stray, "the staging directory is removed");
     let _ = std::fs::remove_dir_all(&out);
 }

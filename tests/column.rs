@@ -6,8 +6,8 @@
 use std::path::Path;
 
 use cdem::drivers::{run_scene, RunResult};
-use cdem::scene::{JointMode, Scene};
 use cdem::harness::report::Check;
+use cdem::scene::{JointMode, Scene};
 
 // references/column.md
 const H: f64 = 40.0;

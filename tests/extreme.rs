@@ -8,10 +8,10 @@
 use std::fmt::Write;
 use std::path::Path;
 
+use cdem::drivers::{run_scene, RunResult};
 use cdem::mesh::adjacency::FaceAdjacency;
 use cdem::mesh::gmsh::read_msh;
 use cdem::mesh::perturb::perturb_nodes;
-use cdem::drivers::{run_scene, RunResult};
 use cdem::scene::Scene;
 
 const G: f64 = 9.81;

@@ -7,8 +7,8 @@
 
 use std::path::Path;
 
-use cdem::fem::element::element_matrices;
 use cdem::drivers::solve_fem as solve_scene;
+use cdem::fem::element::element_matrices;
 use cdem::fem::{solve, FemProblem, FemSolution};
 use cdem::mesh::adjacency::{face_nodes, FaceAdjacency};
 use cdem::mesh::gmsh::read_msh;
@@ -96,9 +96,9 @@ fn patch_problem(mesh: &Mesh, scene: &Scene, h: [[f64; 3]; 3]) -> FemProblem {
     let adj = FaceAdjacency::build(mesh).unwrap();
     for &(c, f) in &adj.exterior {
         for n in face_nodes(mesh, c, f) {
-            for i in 0..3 {
+            for (i, row) in h.iter().enumerate() {
                 p.fixed[3 * n + i] = true;
-                p.prescribed[3 * n + i] = (0..3).map(|j| h[i][j] * p.coords[n][j]).sum();
+                p.prescribed[3 * n + i] = (0..3).map(|j| row[j] * p.coords[n][j]).sum();
             }
         }
     }
@@ -310,7 +310,8 @@ fn refine_slab(mesh: &Mesh) -> Mesh {
     let mut cells = Vec::new();
     for cell in &mesh.cells {
         assert_eq!(cell.kind, CellKind::Hex8);
-        let quad = |o: usize, nodes: &mut Vec<[f64; 3]>, mid: &mut dyn FnMut(&[usize], &mut Vec<[f64; 3]>) -> usize| {
+        type Midpoint<'a> = dyn FnMut(&[usize], &mut Vec<[f64; 3]>) -> usize + 'a;
+        let quad = |o: usize, nodes: &mut Vec<[f64; 3]>, mid: &mut Midpoint| {
             let c = [0, 1, 2, 3].map(|k| cell.nodes[o + k]);
             let m = [0, 1, 2, 3].map(|k| mid(&[c[k], c[(k + 1) % 4]], nodes));
             let f = mid(&c, nodes);
@@ -512,7 +513,10 @@ fn fem_agrees_with_scikit_fem_on_the_unperturbed_column_and_slope() {
         println!("{name}: largest relative difference {worst:.1e}");
         // Same discretisation (trilinear hexahedra, 2x2x2 Gauss, consistent
         // load, Gauss-volume-averaged stress): agreement to round-off.
-        cdem::harness::report::record(&format!("fem_skfem_{}", name.replace(|c: char| !c.is_alphanumeric(), "_")), &checks);
+        cdem::harness::report::record(
+            &format!("fem_skfem_{}", name.replace(|c: char| !c.is_alphanumeric(), "_")),
+            &checks,
+        );
         assert!(worst < 1e-9, "{name}: cdem fem and scikit-fem differ by {worst:e}");
     }
 }

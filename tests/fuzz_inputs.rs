@@ -72,7 +72,7 @@ fn mutate_bytes(rng: &mut SplitMix64, input: &[u8]) -> Vec<u8> {
                 // Delete or duplicate a line.
                 let start = v[..at].iter().rposition(|&b| b == b'\n').map_or(0, |p| p + 1);
                 let end = v[at..].iter().position(|&b| b == b'\n').map_or(v.len(), |p| at + p + 1);
-                if rng.next_u64() % 2 == 0 {
+                if rng.next_u64().is_multiple_of(2) {
                     v.drain(start..end);
                 } else {
                     let line: Vec<u8> = v[start..end].to_vec();

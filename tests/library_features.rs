@@ -25,7 +25,9 @@ fn cli_and_plotting_crates_come_only_with_the_harness_feature() {
     let default: Vec<&str> = features["default"].as_array().unwrap().iter().map(|v| v.as_str().unwrap()).collect();
     assert_eq!(default, ["harness"]);
     let bins = manifest["bin"].as_array().unwrap();
-    assert!(bins.iter().all(|b| b["required-features"].as_array().is_some_and(|f| f.iter().any(|v| v.as_str() == Some("harness")))));
+    assert!(bins
+        .iter()
+        .all(|b| b["required-features"].as_array().is_some_and(|f| f.iter().any(|v| v.as_str() == Some("harness")))));
 }
 
 /// What a library user writes: a scene relaxed and summarised through the

@@ -14,9 +14,9 @@ use std::path::Path;
 
 use cdem::analysis::safety_factors;
 use cdem::analysis::slip::{from_springs, spring_points, SlipCircle};
+use cdem::drivers::{run_watched, EndState, StageSnapshots};
 use cdem::harness::figures::{section_contour, Patch};
 use cdem::harness::section::{element_mean_displacement, front_patches};
-use cdem::drivers::{run_watched, EndState, StageSnapshots};
 use cdem::scene::Scene;
 use cdem::solver::State;
 

@@ -12,12 +12,12 @@ use std::path::Path;
 
 use cdem::analysis::slip::{from_springs, from_stresses, SlipCircle};
 use cdem::analysis::{safety_factors, sign_segments, Segment, SurfacePoint};
+use cdem::harness::figures::{line_plot, section_contour, Scale, Series};
+use cdem::harness::report::Check;
+use cdem::harness::section::element_mean_displacement;
 use cdem::lem::Circle;
 use cdem::lem::{evaluate_circle, LemInput};
-use cdem::harness::figures::{line_plot, section_contour, Scale, Series};
-use cdem::harness::section::element_mean_displacement;
 use cdem::scene::Scene;
-use cdem::harness::report::Check;
 
 /// The circle of slope-slip.geo (centre, through the toe).
 const XC: f64 = 24.006;
@@ -129,8 +129,9 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
 
     // Fig. 9: the surface on the section, and K_i from toe to crest.
     std::fs::create_dir_all("target/figures").unwrap();
-    let patches =
-        cdem::harness::section::front_patches(&run.model, |e| element_mean_displacement(&run.model, &run.state.u, e, 2));
+    let patches = cdem::harness::section::front_patches(&run.model, |e| {
+        element_mean_displacement(&run.model, &run.state.u, e, 2)
+    });
     let arc: Vec<(f64, f64)> = (0..=100)
         .map(|k| {
             let a0 = (TOE[1] - ZC).atan2(TOE[0] - XC);

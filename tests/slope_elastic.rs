@@ -9,8 +9,8 @@ use std::path::Path;
 
 use cdem::analysis::compare::relative_l2_displacement;
 use cdem::drivers::run_scene;
-use cdem::scene::Scene;
 use cdem::harness::report::Check;
+use cdem::scene::Scene;
 
 #[test]
 fn paper_slope_cdem_matches_fem_on_the_same_mesh() {

@@ -29,13 +29,13 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use cdem::model::Model;
+use cdem::drivers::{run_watched, EndState, Stage, StageSnapshots};
 use cdem::harness::figures::{section_contour, Patch};
 use cdem::harness::section::{element_mean_displacement, front_patches};
+use cdem::model::Model;
 use cdem::physics::spring::SpringStatus;
-use cdem::drivers::{run_watched, EndState, Stage, StageSnapshots};
-use cdem::solver::{RunReport, State};
 use cdem::scene::Scene;
+use cdem::solver::{RunReport, State};
 
 /// The toe and the slope height of wulong.geo (the lattice crest is at z = 85.3 m).
 const Z_TOE: f64 = 20.0;

@@ -124,8 +124,7 @@ pub fn spring_points(
     for k in (0..sp.len()).filter(|&k| sp.interface[k] == iface) {
         let (a, b) = (sp.a[k] as usize, sp.b[k] as usize);
         let d = relative_displacement(u, a, b);
-        let f_on_a =
-            spring_contact_force(sp.kn[k], sp.ks[k], sp.normal[k], d, springs.slip[k], springs.status[k]);
+        let f_on_a = spring_contact_force(sp.kn[k], sp.ks[k], sp.normal[k], d, springs.slip[k], springs.status[k]);
         let (s, n, t) = circle.frame(model.x0[a]);
         // The spring normal points from a's element into b's: if it points out
         // of the mass, a is on the mass side and feels the ground's force.

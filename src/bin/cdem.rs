@@ -90,9 +90,11 @@ fn main() -> ExitCode {
         }
         Command::Fem { scene, out } => fem(&scene, &out),
         Command::Lem { input, out } => lem(&input, out.as_deref()),
-        Command::Study { out } => cdem::harness::study::run_study(&out, &mut |what| eprintln!("study: {what}")).map(|rows| {
-            eprintln!("study: {} points -> {}", rows.len(), out.join("study.csv").display());
-        }),
+        Command::Study { out } => {
+            cdem::harness::study::run_study(&out, &mut |what| eprintln!("study: {what}")).map(|rows| {
+                eprintln!("study: {} points -> {}", rows.len(), out.join("study.csv").display());
+            })
+        }
         Command::Perf { out, refine, no_damping } => {
             let opts = cdem::harness::perf::PerfOptions { damping: !no_damping, refine, ..Default::default() };
             cdem::harness::perf::run_perf(Path::new("."), &out, &opts, &mut |what| eprintln!("perf: {what}"))

@@ -78,11 +78,7 @@ pub fn run(
     let rules = StopRules {
         tolerance,
         max_steps: params.max_steps,
-        sliding: Some(Sliding {
-            reference: &u_elastic,
-            displacement: params.sliding_displacement,
-            check_every: 10,
-        }),
+        sliding: Some(Sliding { reference: &u_elastic, displacement: params.sliding_displacement, check_every: 10 }),
         history_every: options.history_every,
     };
     let mut observe = |view: &StepView| {

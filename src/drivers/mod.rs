@@ -10,7 +10,7 @@ pub mod failure;
 pub mod fem;
 pub mod run;
 
+pub use crate::summary::EndState;
 pub use failure::{FailureResult, Stage, StageSnapshots};
 pub use fem::solve_scene as solve_fem;
 pub use run::{build_model, read_mesh, run_scene, run_watched, Frame, Phase, Progress, RunResult, Watch};
-pub use crate::summary::EndState;

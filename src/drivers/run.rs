@@ -42,7 +42,7 @@ pub struct Progress<'a>(pub &'a mut dyn FnMut(usize, f64));
 
 impl Watch for Progress<'_> {
     fn step(&mut self, _phase: Phase, view: &StepView) -> ControlFlow<()> {
-        if view.steps % 100 == 0 {
+        if view.steps.is_multiple_of(100) {
             (self.0)(view.state.step, view.ratio);
         }
         ControlFlow::Continue(())
@@ -111,7 +111,7 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         history_every: scene.output.history_every,
     };
     let mut observe = |view: &StepView| {
-        if frame_every > 0 && view.state.step % frame_every == 0 {
+        if frame_every > 0 && view.state.step.is_multiple_of(frame_every) {
             frames.push(Frame { step: view.state.step, time: view.state.time, u: view.state.u.clone() });
         }
         watch.step(Phase::Elastic, view)

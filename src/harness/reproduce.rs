@@ -13,13 +13,13 @@ use std::time::Instant;
 
 use crate::analysis::slip::{from_springs, from_stresses, SlipCircle};
 use crate::analysis::{safety_factors, sign_segments};
+use crate::drivers::run_scene;
+use crate::drivers::{run_watched, RunResult, StageSnapshots};
 use crate::error::Error;
 use crate::harness::figures::{line_plot, section_contour, Scale, Series};
-use crate::harness::section::{element_mean_displacement, front_patches, front_patches_of_cells};
-use crate::drivers::{run_watched, RunResult, StageSnapshots};
-use crate::drivers::run_scene;
-use crate::scene::Scene;
 use crate::harness::report::{markdown_table, Check};
+use crate::harness::section::{element_mean_displacement, front_patches, front_patches_of_cells};
+use crate::scene::Scene;
 
 /// The slip circle of verification/cases/slope-slip/slope-slip.geo.
 pub const SLIP_CIRCLE: SlipCircle = SlipCircle { xc: 24.006, zc: 63.222, toe: [20.0, 20.0] };

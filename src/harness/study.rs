@@ -16,11 +16,11 @@ use std::path::Path;
 
 use serde::Serialize;
 
-use crate::error::Error;
+use crate::drivers::run_scene;
 use crate::drivers::solve_fem as solve_scene;
+use crate::error::Error;
 use crate::fem::FemSolution;
 use crate::harness::figures::{line_plot, Scale, Series};
-use crate::drivers::run_scene;
 use crate::scene::Scene;
 
 /// One point of the study.

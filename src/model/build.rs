@@ -2,6 +2,7 @@
 
 use std::collections::HashMap;
 
+use super::spec::{JointMode, ModelSpec};
 use super::{Elements, Gather, Interface, Model};
 use crate::error::{Error, ModelError};
 use crate::mesh::adjacency::{face_key, face_nodes, FaceAdjacency, FaceKey};
@@ -11,7 +12,6 @@ use crate::mesh::Mesh;
 use crate::physics::element::element_operators;
 use crate::physics::material::{Material, YoungPoisson};
 use crate::physics::spring::{spring_stiffness, Springs};
-use super::spec::{JointMode, ModelSpec};
 
 /// Builds the model: 1. perturb nodes, 2. classify interfaces, 3. make node
 /// copies (merging across merged interfaces), 4. element operators and masses,
@@ -117,8 +117,7 @@ pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
 
 /// The scene's `[[material]]` sections as materials (in scene order).
 pub fn spec_materials(spec: &ModelSpec) -> Vec<Material> {
-    spec
-        .material
+    spec.material
         .iter()
         .map(|m| Material {
             lame: YoungPoisson { young: m.youngs_modulus, poisson: m.poisson_ratio }.into(),

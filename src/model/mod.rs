@@ -11,10 +11,10 @@ pub use spec::{JointMode, ModelSpec};
 
 use crate::mesh::shape::CellDefect;
 use crate::mesh::CellKind;
-use crate::physics::tet_operator::TetOperators;
 use crate::physics::element::element_stress;
 use crate::physics::material::Material;
 use crate::physics::spring::{Springs, Strength};
+use crate::physics::tet_operator::TetOperators;
 
 /// Elements, struct of arrays. Element `e` owns corners
 /// `nodes[offset[e]..offset[e+1]]` (model node indices) and the stiffness

@@ -126,6 +126,9 @@ pub fn spring_contact_force(
 ///
 /// Plastic slip is updated so that `K_s (d_s - d_s^p)` equals the returned
 /// shear force.
+// One spring's geometry, stiffness, strength and state, passed by value to keep
+// the kernel free of the model's layout.
+#[allow(clippy::too_many_arguments)]
 #[inline]
 pub fn breakable_spring_force(
     kn: f64,

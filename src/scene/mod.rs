@@ -86,7 +86,6 @@ pub struct MeshSection {
     pub file: PathBuf,
 }
 
-
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Loads {

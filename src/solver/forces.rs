@@ -3,6 +3,7 @@
 //! 2. every spring writes its force on node `a` (eq. 15) into its own slot;
 //! 3. every node gathers its contributions in the fixed order of
 //!    [`Gather`](crate::model::Gather).
+//!
 //! No two threads write the same value and every sum has a fixed order, so
 //! the result is bit for bit the same whatever the number of threads.
 

@@ -35,7 +35,8 @@ impl Inertia {
 
     pub fn block(mass: Vec<f64>, block: BlockMass) -> Self {
         let n = mass.len();
-        let block = Block { mass: block, per_node: vec![0.0; n], slot_force: vec![0.0; 3 * n], slot_acc: vec![0.0; 3 * n] };
+        let block =
+            Block { mass: block, per_node: vec![0.0; n], slot_force: vec![0.0; 3 * n], slot_acc: vec![0.0; 3 * n] };
         Self { lumped: mass, block: Some(block) }
     }
 

@@ -135,8 +135,12 @@ impl Solver {
     /// Relaxes `state` to this solver's own tolerance within its step budget
     /// (`params`), without an observer: [`relax()`] with those rules.
     pub fn relax(&mut self, model: &Model, state: &mut State, history_every: usize) -> Result<RunReport, SolveError> {
-        let rules =
-            StopRules { tolerance: self.params.tolerance, max_steps: self.params.max_steps, sliding: None, history_every };
+        let rules = StopRules {
+            tolerance: self.params.tolerance,
+            max_steps: self.params.max_steps,
+            sliding: None,
+            history_every,
+        };
         relax::relax(self, model, state, &rules, &mut relax::unobserved)
     }
 
@@ -198,7 +202,7 @@ impl Solver {
         if !kinetic.is_finite() {
             return Err(self.non_finite(state));
         }
-        if self.inertia.is_block() && state.step % 16 == 0 {
+        if self.inertia.is_block() && state.step.is_multiple_of(16) {
             kinetic = self.kinetic_energy(state);
         }
         self.monitor(model, state, kinetic)?;
@@ -208,7 +212,7 @@ impl Solver {
     /// Adaptive viscous damping: `c = 2 omega` from the Rayleigh quotient,
     /// refreshed every 10 steps.
     fn update_damping(&mut self, state: &State) {
-        if self.params.damping == DampingKind::Viscous && state.step % 10 == 0 {
+        if self.params.damping == DampingKind::Viscous && state.step.is_multiple_of(10) {
             let w2 = match self.inertia.is_block() {
                 true => rayleigh_omega2_with(dot(&state.u, &state.f_int), self.inertia.quadratic(&state.u)),
                 false => rayleigh_omega2(&state.u, &state.f_int, self.inertia.lumped_masses()),
@@ -244,7 +248,7 @@ impl Solver {
         if !kinetic.is_finite() {
             return Err(self.non_finite(state));
         }
-        if kinetic > 0.0 && state.step % 16 == 0 {
+        if kinetic > 0.0 && state.step.is_multiple_of(16) {
             let work = dot(&model.f_ext, &state.u);
             // Energy balance: kinetic + strain = work - dissipated <= work.
             // The kinetic energy of central differences (half-step

@@ -120,7 +120,7 @@ pub fn relax(
         stop = if ratio < rules.tolerance {
             Some(Stop::Converged)
         } else if rules.sliding.is_some_and(|s| {
-            steps % s.check_every == 0 && max_displacement_since(&state.u, s.reference) > s.displacement
+            steps.is_multiple_of(s.check_every) && max_displacement_since(&state.u, s.reference) > s.displacement
         }) {
             Some(Stop::Sliding)
         } else if steps >= rules.max_steps {
@@ -128,7 +128,7 @@ pub fn relax(
         } else {
             None
         };
-        if state.step % rules.history_every == 0 || stop == Some(Stop::Converged) {
+        if state.step.is_multiple_of(rules.history_every) || stop == Some(Stop::Converged) {
             history.push(solver.history_row(model, state, kinetic, ratio));
         }
         let view = StepView { state, steps, ratio, kinetic, stop };
