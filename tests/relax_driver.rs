@@ -1,0 +1,92 @@
+//! The relax driver's stop rules (src/solver/relax.rs), each made to fire on
+//! the merged column: tolerance, budget, the caller's stop, and sliding; the
+//! order of the rules; history rows at the cadence and at convergence.
+
+use std::ops::ControlFlow;
+use std::path::Path;
+
+use cdem::drivers::build_model;
+use cdem::scene::Scene;
+use cdem::solver::relax::unobserved;
+use cdem::solver::{relax, Sliding, Solver, State, StepView, Stop, StopRules};
+
+fn column() -> (cdem::model::Model, Solver, State, f64) {
+    let scene = Scene::load(Path::new("verification/cases/column/column-merged.toml")).unwrap();
+    let model = build_model(&scene).unwrap();
+    let solver = Solver::new(&model, scene.solver.clone()).unwrap();
+    let state = State::new(&model);
+    (model, solver, state, scene.solver.tolerance)
+}
+
+fn rules(tolerance: f64, max_steps: usize) -> StopRules<'static> {
+    StopRules { tolerance, max_steps, sliding: None, history_every: 10 }
+}
+
+#[test]
+fn tolerance_stops_with_converged_and_a_last_history_row() {
+    let (model, mut solver, mut state, tol) = column();
+    let r = relax(&mut solver, &model, &mut state, &rules(tol, 100_000), &mut unobserved).unwrap();
+    assert_eq!(r.stop, Stop::Converged);
+    assert!(r.converged && r.unbalanced_ratio < tol);
+    assert_eq!(state.step, r.steps);
+    let last = r.history.last().unwrap();
+    assert_eq!(last.step, r.steps, "a row at convergence");
+    assert!(r.history.iter().rev().skip(1).all(|h| h.step % 10 == 0), "the other rows on the cadence");
+}
+
+#[test]
+fn budget_stops_after_exactly_max_steps() {
+    let (model, mut solver, mut state, tol) = column();
+    let r = relax(&mut solver, &model, &mut state, &rules(tol, 50), &mut unobserved).unwrap();
+    assert_eq!((r.stop, r.steps, r.converged), (Stop::Budget, 50, false));
+    assert!(r.unbalanced_ratio > tol);
+    assert_eq!(r.history.len(), 5, "rows at steps 10..50");
+}
+
+#[test]
+fn the_callers_stop_ends_on_the_step_it_is_asked() {
+    let (model, mut solver, mut state, tol) = column();
+    let mut seen = Vec::new();
+    let mut stop_at_30 = |v: &StepView| {
+        seen.push((v.steps, v.stop));
+        if v.steps == 30 {
+            ControlFlow::Break(())
+        } else {
+            ControlFlow::Continue(())
+        }
+    };
+    let r = relax(&mut solver, &model, &mut state, &rules(tol, 1000), &mut stop_at_30).unwrap();
+    assert_eq!((r.stop, r.steps), (Stop::Caller, 30));
+    assert_eq!(seen.len(), 30, "the observer sees every step");
+    assert!(seen.iter().enumerate().all(|(k, &(s, stop))| s == k + 1 && stop.is_none()));
+}
+
+#[test]
+fn sliding_is_checked_on_its_cadence_and_after_the_tolerance() {
+    let (model, mut solver, mut state, tol) = column();
+    // A reference 1 m away from the rest state: the displacement "since" it
+    // is 1 m from the first step, so the rule fires at its first check.
+    let reference = vec![1.0; 3 * model.n_nodes()];
+    let sliding = Sliding { reference: &reference, displacement: 0.5, check_every: 7 };
+    let r = relax(
+        &mut solver,
+        &model,
+        &mut state,
+        &StopRules { sliding: Some(sliding), ..rules(tol, 1000) },
+        &mut unobserved,
+    )
+    .unwrap();
+    assert_eq!((r.stop, r.steps), (Stop::Sliding, 7));
+
+    // With a tolerance the first step meets, converged wins over sliding.
+    let (model, mut solver, mut state, _) = column();
+    let r = relax(
+        &mut solver,
+        &model,
+        &mut state,
+        &StopRules { sliding: Some(Sliding { check_every: 1, ..sliding }), ..rules(f64::INFINITY, 1000) },
+        &mut unobserved,
+    )
+    .unwrap();
+    assert_eq!((r.stop, r.steps), (Stop::Converged, 1));
+}
