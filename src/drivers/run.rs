@@ -122,7 +122,7 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         steps: elastic.steps,
         unbalanced_ratio: elastic.unbalanced_ratio,
         failed_springs: failed_springs(&state.springs.status),
-        max_displacement: max_displacement_since(&state.u, &vec![0.0; state.u.len()]),
+        max_displacement: FieldExtremes::of(&state.u, None).max_abs_u,
     };
 
     // Phase 2.
