@@ -9,8 +9,8 @@
 
 use std::path::Path;
 
+use cdem::harness::perf::pyslope::{pyslope_grid_search, LEM_CASES};
 use cdem::lem::{analyse, EntryExitSpec, GridSpec, LemInput, Method, Mode, SearchSpec};
-use cdem::harness::perf::{pyslope_grid_search, LEM_CASES};
 use criterion::{criterion_group, criterion_main, Criterion};
 
 fn with_search(base: &LemInput, spec: SearchSpec, methods: &[Method]) -> LemInput {
