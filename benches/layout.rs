@@ -67,7 +67,8 @@ fn interleaved_best(
     });
     let rate = |t: f64| n_el as f64 / t / 1e6;
     eprintln!(
-        "hex_{n_el}: interleaved best of {reps}, 1 thread: condensed {:.2} M/s, per-tet {:.2} M/s, per-tet/condensed {:.2}",
+        "hex_{n_el}: interleaved best of {reps}, 1 thread: condensed {:.2} M/s, per-tet {:.2} M/s, \
+         per-tet/condensed {:.2}",
         rate(best_k),
         rate(best_t),
         best_k / best_t

@@ -9,7 +9,7 @@
 
 use std::path::Path;
 
-use cdem::harness::perf::{pyslope_grid_search, LEM_CASES};
+use cdem::harness::perf::pyslope::{pyslope_grid_search, LEM_CASES};
 use cdem::lem::{analyse, EntryExitSpec, GridSpec, LemInput, Method, Mode, SearchSpec};
 use criterion::{criterion_group, criterion_main, Criterion};
 

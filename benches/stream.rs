@@ -3,7 +3,7 @@
 //!
 //! - `stream/triad_1thread/64MiB`: `a[i] = b[i] + s c[i]` over three arrays of
 //!   8 Mi f64 (64 MiB each, far larger than the caches), one thread; the
-//!   loops are `cdem::harness::perf::triad`/`triad_par`, the ones `cdem perf` times;
+//!   loops are `cdem::harness::perf::stream::{triad, triad_par}`, the ones `cdem perf` times;
 //! - `stream/triad_2threads/64MiB`: the same split over a 2-thread rayon pool;
 //! - `stream/read_1thread/64MiB`, `read_2threads`: `sum b[i]` (reads only),
 //!   the fairer yardstick for a read-dominated kernel such as `K_e u_e`.
@@ -13,7 +13,7 @@
 
 use std::hint::black_box;
 
-use cdem::harness::perf::{triad, triad_par};
+use cdem::harness::perf::stream::{triad, triad_par};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use rayon::prelude::*;
 

@@ -8,7 +8,7 @@
 
 use std::path::Path;
 
-use cdem::harness::perf::{pyslope_grid_search, LEM_CASES};
+use cdem::harness::perf::pyslope::{pyslope_grid_search, LEM_CASES};
 use cdem::lem::{analyse, LemInput, Method};
 
 const ROUNDS: usize = 15;
@@ -36,7 +36,8 @@ fn main() {
         cpu.sort_by(f64::total_cmp);
         wall.sort_by(f64::total_cmp);
         println!(
-            "{case}: on-CPU {:.2} ms per search (median of {ROUNDS} x {PER_ROUND}; min {:.2}), wall {:.2} ms; {} admissible circles, {} rejected; Bishop F {:.10}",
+            "{case}: on-CPU {:.2} ms per search (median of {ROUNDS} x {PER_ROUND}; min {:.2}), wall {:.2} ms; \
+             {} admissible circles, {} rejected; Bishop F {:.10}",
             cpu[ROUNDS / 2],
             cpu[0],
             wall[ROUNDS / 2],

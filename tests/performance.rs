@@ -6,7 +6,9 @@
 
 use std::path::Path;
 
-use cdem::harness::perf::{fit_power, headline, paper_slope, step_bytes};
+use cdem::harness::perf::bytes::step_bytes;
+use cdem::harness::perf::headline::{headline, paper_slope};
+use cdem::harness::perf::scaling::fit_power;
 use cdem::harness::report::{record, Check};
 
 /// The fit recovers an exact power law.

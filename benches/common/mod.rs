@@ -9,10 +9,10 @@ fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// The committed paper-slope meshes (`cdem::harness::perf::SLOPE_MESHES`), coarse to
+/// The committed paper-slope meshes (`cdem::harness::perf::scaling::SLOPE_MESHES`), coarse to
 /// fine, with their hexahedron counts (1000 refine^2): 250, 1000, 4000, 16000.
 pub fn meshes() -> Vec<(PathBuf, usize)> {
-    cdem::harness::perf::SLOPE_MESHES
+    cdem::harness::perf::scaling::SLOPE_MESHES
         .iter()
         .map(|&(refine, path)| (root().join(path), (1000.0 * refine * refine) as usize))
         .collect()

@@ -1,0 +1,72 @@
+//! The four figures the performance issue asks for, measured on the paper
+//! slope in one process so that their ratios are side by side on one
+//! machine state: the STREAM triad ([`super::stream`]), a step with block and
+//! with lumped masses against the byte model ([`super::timing`],
+//! [`super::bytes`]), dynamic relaxation against the FEM solve, and the LEM
+//! grid search against pySlope ([`super::pyslope`]). The table is
+//! [`Headline::markdown`] ([`super::tables`]).
+
+use std::path::Path;
+
+use serde::Serialize;
+
+use super::pyslope::{pyslope_seconds, time_lem_grid, LEM_CASES};
+use super::stream::stream_triad;
+use super::timing::{time_dr, time_fem, time_steps, DrFigure, StepFigure};
+use crate::error::Error;
+use crate::model::Model;
+use crate::scene::Scene;
+use crate::solver::SolverParams;
+
+/// The four figures the issue asks for, on the paper slope, side by side.
+#[derive(Debug, Clone, Serialize)]
+pub struct Headline {
+    /// STREAM triad on the current rayon pool (GB/s).
+    pub stream_gbs: f64,
+    /// The scene's step (block masses) and the lumped-mass step.
+    pub step_block: StepFigure,
+    pub step_lumped: StepFigure,
+    pub dr_block: DrFigure,
+    pub fem_s: f64,
+    pub fem_dofs: usize,
+    /// `(case, ours (s), pySlope (s))`: Bishop on the 20 x 20 x 10 grid,
+    /// one thread; pySlope's time from references/pyslope.json.
+    pub lem: Vec<(String, f64, f64)>,
+}
+
+impl Headline {
+    pub fn step_fraction_of_stream(&self) -> f64 {
+        self.step_block.gbs / self.stream_gbs
+    }
+    pub fn dr_over_fem(&self) -> f64 {
+        self.dr_block.seconds / self.fem_s
+    }
+}
+
+/// The paper slope's scene and model (paths relative to the repository root).
+pub fn paper_slope(root: &Path) -> Result<(Scene, Model), Error> {
+    let scene = Scene::load(&root.join("verification/cases/slope/slope.toml"))?;
+    let model = crate::drivers::build_model(&scene)?;
+    Ok((scene, model))
+}
+
+/// Measures the headline figures on the paper slope's `scene` and `model`
+/// ([`paper_slope`]) and the repository's LEM inputs under `root`.
+pub fn headline(root: &Path, scene: &Scene, model: &Model, progress: &mut dyn FnMut(&str)) -> Result<Headline, Error> {
+    progress("stream triad");
+    let stream_gbs = stream_triad(8 << 20, 10);
+    progress("paper slope: step");
+    let step_block = time_steps(model, &scene.solver, 500)?;
+    let step_lumped = time_steps(model, &SolverParams { block_mass: Some(false), ..scene.solver.clone() }, 500)?;
+    progress("paper slope: dynamic relaxation");
+    let dr_block = time_dr(model, &scene.solver)?;
+    progress("paper slope: FEM");
+    let (fem_s, fem_dofs) = time_fem(scene, 5)?;
+    let mut lem = Vec::new();
+    for (case, input) in LEM_CASES {
+        progress(&format!("LEM grid: {case}"));
+        let ours = time_lem_grid(&root.join(input), 5)?;
+        lem.push((case.to_string(), ours, pyslope_seconds(&root.join("references/pyslope.json"), case)?));
+    }
+    Ok(Headline { stream_gbs, step_block, step_lumped, dr_block, fem_s, fem_dofs, lem })
+}

@@ -1,0 +1,83 @@
+//! Performance figures (issue: performance), measured in-process so that one
+//! run puts every ratio side by side: the criterion benches measure the same
+//! things more carefully; this module gives them to the validation report
+//! (`tests/performance.rs`) and to `cdem perf` ([`run_perf`]), which adds the
+//! damping table and the growth with size (references/performance.md).
+//!
+//! One file per concern:
+//! - [`stream`]: the machine's memory bandwidth (STREAM triad);
+//! - [`bytes`]: the bytes one step must move (counted as in
+//!   references/performance.md), so `bytes / step time` is the step's
+//!   effective bandwidth;
+//! - [`timing`]: a step, dynamic relaxation to the scene's tolerance, the
+//!   implicit FEM solve of the same mesh;
+//! - [`pyslope`]: the LEM grid search against pySlope's recorded time;
+//! - [`headline`]: the issue's four figures on the paper slope;
+//! - [`damping`]: damping kind x mass scaling x block masses on one scene;
+//! - [`scaling`]: cost against size, fitted exponents;
+//! - [`tables`]: the Markdown tables, the CSV files and the figure.
+//!
+//! The items are also re-exported here (`perf::step_bytes`, ...).
+//!
+//! Times are wall-clock on whatever else the machine is doing: they are
+//! reported, never asserted.
+
+use std::path::Path;
+
+use crate::error::Error;
+
+pub mod bytes;
+pub mod damping;
+pub mod headline;
+pub mod pyslope;
+pub mod scaling;
+pub mod stream;
+pub mod tables;
+pub mod timing;
+
+pub use bytes::step_bytes;
+pub use damping::{damping_table, DampingRow};
+pub use headline::{headline, paper_slope, Headline};
+pub use pyslope::{pyslope_grid_search, pyslope_seconds, time_lem_grid, LEM_CASES};
+pub use scaling::{
+    exponents, fit_power, scaling_meshes, scaling_study, slope_mesh, Exponents, ScalingRow, SLOPE_MESHES,
+};
+pub use stream::{stream_triad, triad, triad_par};
+pub use tables::{damping_markdown, scaling_markdown, write_report};
+pub use timing::{time_dr, time_fem, time_steps, DrFigure, StepFigure};
+
+/// What `cdem perf` runs.
+#[derive(Debug, Clone)]
+pub struct PerfOptions {
+    /// Run the damping table (about 3 minutes: local damping is slow).
+    pub damping: bool,
+    /// Resolutions of the scaling study (`refine` of slope.geo); those
+    /// without a committed mesh need gmsh on PATH.
+    pub refine: Vec<f64>,
+    /// Lumped-mass DR is also run up to this many elements.
+    pub lumped_up_to: usize,
+}
+
+impl Default for PerfOptions {
+    fn default() -> Self {
+        Self { damping: true, refine: vec![0.5, 1.0, 2.0, 4.0, 7.0, 10.0], lumped_up_to: 4000 }
+    }
+}
+
+/// Step cap of each run of the damping table (local damping with mass
+/// scaling takes about 274,000 on the paper slope).
+const DAMPING_MAX_STEPS: usize = 400_000;
+
+/// `cdem perf`: headline figures, damping table and scaling study; writes
+/// `perf.md`, `damping.csv`, `scaling.csv` and `scaling.png` to `out`
+/// (gmsh meshes in `out/meshes`) and returns `perf.md`.
+pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn FnMut(&str)) -> Result<String, Error> {
+    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
+    let (scene, model) = paper_slope(root)?;
+    let head = headline(root, &scene, &model, progress)?;
+    let damping =
+        if opts.damping { damping_table(&model, &scene.solver, DAMPING_MAX_STEPS, progress) } else { Vec::new() };
+    let meshes = scaling_meshes(root, &opts.refine, &out.join("meshes"), progress)?;
+    let scaling = scaling_study(&scene, &meshes, opts.lumped_up_to, progress)?;
+    write_report(out, &head, &damping, &scaling)
+}

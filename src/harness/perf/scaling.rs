@@ -1,0 +1,180 @@
+//! Cost against size: the paper slope's scene on its `.geo` at several
+//! `refine` (1000 refine^2 hexahedra; the committed meshes, [`SLOPE_MESHES`],
+//! or gmsh for a whole `refine`, [`slope_mesh`]), and per resolution the
+//! build, a step, dynamic relaxation (with lumped masses too on the smaller
+//! meshes) and the FEM solve ([`super::timing`]); then the exponents `p` of
+//! `cost ~ N^p` against the element count `N`, fitted by least squares on
+//! logarithms ([`fit_power`]).
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use serde::Serialize;
+
+use super::timing::{time_dr, time_fem, time_steps};
+use crate::error::Error;
+use crate::scene::Scene;
+use crate::solver::SolverParams;
+
+/// The committed meshes of the paper slope, coarse to fine: `refine` of
+/// slope.geo (1000 refine^2 hexahedra) and the path from the repository root.
+pub const SLOPE_MESHES: [(f64, &str); 4] = [
+    (0.5, "verification/study/slope-h4.msh"),
+    (1.0, "verification/cases/slope/slope.msh"),
+    (2.0, "verification/study/slope-h1.msh"),
+    (4.0, "verification/study/slope-h05.msh"),
+];
+
+/// The paper slope's `.geo` at `refine`, meshed with gmsh into `dir`
+/// (`slope-r<refine>.msh`); the existing file is reused.
+pub fn slope_mesh(slope_geo: &Path, refine: u32, dir: &Path) -> Result<PathBuf, Error> {
+    let msh = dir.join(format!("slope-r{refine}.msh"));
+    if msh.is_file() {
+        return Ok(msh);
+    }
+    std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+    let geo = dir.join(format!("slope-r{refine}.geo"));
+    let include = slope_geo.canonicalize().map_err(|e| Error::io(slope_geo, e))?;
+    let text = format!(
+        "// The paper slope at refine = {refine} (cdem perf).\nrefine = {refine};\nInclude \"{}\";\n",
+        include.display()
+    );
+    std::fs::write(&geo, text).map_err(|e| Error::io(&geo, e))?;
+    crate::mesh::gmsh::regenerate(&geo, &msh)?;
+    Ok(msh)
+}
+
+/// The meshes of the study, `(refine, canonical path)`: a committed mesh of
+/// [`SLOPE_MESHES`] under `root`, else for a whole `refine` from 1 up the
+/// [`slope_mesh`] in `dir`; any other `refine` is an error.
+pub fn scaling_meshes(
+    root: &Path,
+    refine: &[f64],
+    dir: &Path,
+    progress: &mut dyn FnMut(&str),
+) -> Result<Vec<(f64, PathBuf)>, Error> {
+    let mut meshes = Vec::new();
+    for &r in refine {
+        let committed = SLOPE_MESHES.iter().find(|(c, _)| *c == r).map(|(_, p)| root.join(p));
+        let mesh = match committed {
+            Some(p) => p,
+            None if r.fract() == 0.0 && r >= 1.0 => {
+                progress(&format!("gmsh: slope at refine {r}"));
+                slope_mesh(&root.join("verification/cases/slope/slope.geo"), r as u32, dir)?
+            }
+            None => {
+                return Err(Error::Gmsh(format!(
+                    "refine {r}: only the committed 0.5, 1, 2, 4 or a whole number can be meshed"
+                )))
+            }
+        };
+        meshes.push((r, mesh.canonicalize().map_err(|e| Error::io(&mesh, e))?));
+    }
+    Ok(meshes)
+}
+
+/// One resolution of the scaling study.
+#[derive(Debug, Clone, Serialize)]
+pub struct ScalingRow {
+    /// The `.geo`'s `refine` (elements = 1000 refine^2 for the paper slope).
+    pub refine: f64,
+    pub elements: usize,
+    pub node_copies: usize,
+    pub springs: usize,
+    pub build_s: f64,
+    /// Per step, with the scene's solver (block masses).
+    pub step_s: f64,
+    pub mega_element_steps_per_s: f64,
+    pub gbs: f64,
+    pub dr_steps: usize,
+    pub dr_converged: bool,
+    pub dr_s: f64,
+    /// DR steps with lumped masses, measured only up to `lumped_up_to` elements.
+    pub lumped_steps: Option<usize>,
+    pub fem_s: f64,
+    pub fem_dofs: usize,
+}
+
+/// Cost against size on `scene` with the meshes given as `(refine, mesh)`.
+pub fn scaling_study(
+    scene: &Scene,
+    meshes: &[(f64, PathBuf)],
+    lumped_up_to: usize,
+    progress: &mut dyn FnMut(&str),
+) -> Result<Vec<ScalingRow>, Error> {
+    let mut rows = Vec::new();
+    for (refine, mesh) in meshes {
+        let mut s = scene.clone();
+        s.mesh.file = mesh.clone();
+        progress(&format!("scaling: refine {refine}: build"));
+        let t = Instant::now();
+        let model = crate::drivers::build_model(&s)?;
+        let build_s = t.elapsed().as_secs_f64();
+        let n = model.elements.len();
+        progress(&format!("scaling: {n} elements: steps"));
+        let steps = (2_000_000 / n.max(1)).clamp(20, 500);
+        let step = time_steps(&model, &s.solver, steps)?;
+        progress(&format!("scaling: {n} elements: DR ({:.1} ms per step)", 1e3 * step.step_s));
+        let dr = time_dr(&model, &s.solver)?;
+        let lumped_steps = if n <= lumped_up_to {
+            progress(&format!("scaling: {n} elements: DR with lumped masses"));
+            Some(time_dr(&model, &SolverParams { block_mass: Some(false), ..s.solver.clone() })?.steps)
+        } else {
+            None
+        };
+        let (node_copies, springs) = (model.n_nodes(), model.springs.len());
+        drop(model); // the FEM solve of the largest meshes needs the memory
+        progress(&format!("scaling: {n} elements: FEM"));
+        let (fem_s, fem_dofs) = time_fem(&s, 1)?;
+        rows.push(ScalingRow {
+            refine: *refine,
+            elements: n,
+            node_copies,
+            springs,
+            build_s,
+            step_s: step.step_s,
+            mega_element_steps_per_s: step.mega_element_steps_per_s,
+            gbs: step.gbs,
+            dr_steps: dr.steps,
+            dr_converged: dr.converged,
+            dr_s: dr.seconds,
+            lumped_steps,
+            fem_s,
+            fem_dofs,
+        });
+    }
+    Ok(rows)
+}
+
+/// The fitted exponents of the scaling study against the element count.
+#[derive(Debug, Clone, Serialize)]
+pub struct Exponents {
+    pub step_s: f64,
+    pub dr_steps: f64,
+    pub dr_s: f64,
+    pub fem_s: f64,
+}
+
+/// The exponents of time per step, DR steps, DR time and FEM time against
+/// the element count ([`fit_power`]; at least two rows).
+pub fn exponents(rows: &[ScalingRow]) -> Exponents {
+    let n: Vec<f64> = rows.iter().map(|r| r.elements as f64).collect();
+    let fit = |f: &dyn Fn(&ScalingRow) -> f64| fit_power(&n, &rows.iter().map(f).collect::<Vec<_>>()).0;
+    Exponents {
+        step_s: fit(&|r| r.step_s),
+        dr_steps: fit(&|r| r.dr_steps as f64),
+        dr_s: fit(&|r| r.dr_s),
+        fem_s: fit(&|r| r.fem_s),
+    }
+}
+
+/// Least-squares fit of `y = a x^p` on logarithms: `(p, a)`.
+pub fn fit_power(x: &[f64], y: &[f64]) -> (f64, f64) {
+    let n = x.len().min(y.len()) as f64;
+    let (lx, ly): (Vec<f64>, Vec<f64>) = x.iter().zip(y).map(|(x, y)| (x.ln(), y.ln())).unzip();
+    let (mx, my) = (lx.iter().sum::<f64>() / n, ly.iter().sum::<f64>() / n);
+    let sxy: f64 = lx.iter().zip(&ly).map(|(a, b)| (a - mx) * (b - my)).sum();
+    let sxx: f64 = lx.iter().map(|a| (a - mx) * (a - mx)).sum();
+    let p = sxy / sxx;
+    (p, (my - p * mx).exp())
+}

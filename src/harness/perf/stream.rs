@@ -1,0 +1,37 @@
+//! The machine's memory bandwidth, the yardstick of "fraction of stream":
+//! the STREAM triad `a = b + s c` over three arrays of f64, timed on the
+//! current rayon pool. [`triad`] and [`triad_par`] are also the loops
+//! `benches/stream.rs` measures with criterion.
+
+use std::time::Instant;
+
+/// STREAM triad `a = b + s c` over three arrays of `n` f64 on the current
+/// rayon pool: the best of `repeats` passes, in GB/s (24 B per iteration;
+/// the write-allocate read is not counted, as in STREAM).
+pub fn stream_triad(n: usize, repeats: usize) -> f64 {
+    let mut a = vec![0.0; n];
+    let b: Vec<f64> = (0..n).map(|i| i as f64).collect();
+    let c: Vec<f64> = (0..n).map(|i| (n - i) as f64).collect();
+    let mut best = f64::INFINITY;
+    for _ in 0..repeats.max(1) {
+        let t = Instant::now();
+        triad_par(&mut a, &b, &c, 3.0);
+        best = best.min(t.elapsed().as_secs_f64());
+    }
+    std::hint::black_box(&a);
+    24.0 * n as f64 / best / 1e9
+}
+
+/// STREAM's triad `a[i] = b[i] + s c[i]`, one thread.
+pub fn triad(a: &mut [f64], b: &[f64], c: &[f64], s: f64) {
+    for ((a, b), c) in a.iter_mut().zip(b).zip(c) {
+        *a = b + s * c;
+    }
+}
+
+/// The triad over the current rayon pool, in chunks of 64 Ki elements.
+pub fn triad_par(a: &mut [f64], b: &[f64], c: &[f64], s: f64) {
+    use rayon::prelude::*;
+    const CHUNK: usize = 1 << 16;
+    a.par_chunks_mut(CHUNK).zip(b.par_chunks(CHUNK)).zip(c.par_chunks(CHUNK)).for_each(|((a, b), c)| triad(a, b, c, s));
+}

@@ -1,0 +1,172 @@
+//! What `cdem perf` writes: the Markdown tables of the headline figures, the
+//! damping table and the scaling study (with its fitted exponents), the
+//! rows as CSV, the cost-against-size figure, and `perf.md` made of the
+//! three tables. Formatting only: the numbers come from the other modules.
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use serde::Serialize;
+
+use super::damping::DampingRow;
+use super::headline::Headline;
+use super::scaling::{exponents, ScalingRow};
+use crate::error::Error;
+
+impl Headline {
+    /// The figures as a Markdown table, each with its goal.
+    pub fn markdown(&self) -> String {
+        let mut md = String::new();
+        let _ = writeln!(md, "| figure | measured | goal |\n|---|---|---|");
+        let _ = writeln!(md, "| stream triad (this pool) | {:.1} GB/s | - |", self.stream_gbs);
+        for (name, s) in [("block masses (default)", &self.step_block), ("lumped masses", &self.step_lumped)] {
+            let _ = writeln!(
+                md,
+                "| step, {name}, {} elements | {:.3} ms, {:.2} M element-steps/s, {:.0} B/element, \
+                 {:.1} GB/s = {:.0} % of stream | >= 50 % |",
+                s.elements,
+                1e3 * s.step_s,
+                s.mega_element_steps_per_s,
+                s.bytes_per_step / s.elements as f64,
+                s.gbs,
+                100.0 * s.gbs / self.stream_gbs
+            );
+        }
+        let _ = writeln!(
+            md,
+            "| DR to 1e-5 / FEM solve (paper slope) | {:.3} s ({} steps) / {:.4} s ({} dofs) = {:.1}x | <= 3x |",
+            self.dr_block.seconds,
+            self.dr_block.steps,
+            self.fem_s,
+            self.fem_dofs,
+            self.dr_over_fem()
+        );
+        for (case, ours, py) in &self.lem {
+            let _ = writeln!(
+                md,
+                "| LEM Bishop grid 20x20x10, {case}: pySlope / ours | {py:.3} s / {:.2} ms = {:.0}x | >= 100x |",
+                1e3 * ours,
+                py / ours
+            );
+        }
+        md
+    }
+}
+
+/// The damping rows as a Markdown table.
+pub fn damping_markdown(damping: &[DampingRow]) -> String {
+    let mut md = String::new();
+    if !damping.is_empty() {
+        md.push_str(
+            "| damping | mass scaling | block masses | outcome | steps | wall (s) | max abs u_z (m) |\n\
+             |---|---|---|---|---|---|---|\n",
+        );
+        for r in damping {
+            let _ = writeln!(
+                md,
+                "| {} | {} | {} | {} | {} | {:.2} | {:.4e} |",
+                r.damping, r.mass_scaling, r.block_mass, r.outcome, r.steps, r.seconds, r.max_abs_uz
+            );
+        }
+    }
+    md
+}
+
+/// The scaling rows as a Markdown table, with the fitted exponents.
+pub fn scaling_markdown(scaling: &[ScalingRow]) -> String {
+    let mut md = String::new();
+    if !scaling.is_empty() {
+        md.push_str(
+            "\n| refine | elements | node copies | springs | build (s) | step (ms) | M element-steps/s | step GB/s \
+             | DR steps | DR steps, lumped | DR (s) | FEM dofs | FEM (s) | DR / FEM |\n\
+             |---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        );
+        for r in scaling {
+            let lumped = r.lumped_steps.map_or("-".to_string(), |s| s.to_string());
+            let _ = writeln!(
+                md,
+                "| {} | {} | {} | {} | {:.2} | {:.3} | {:.2} | {:.1} | {}{} | {} | {:.2} | {} | {:.3} | {:.1} |",
+                r.refine,
+                r.elements,
+                r.node_copies,
+                r.springs,
+                r.build_s,
+                1e3 * r.step_s,
+                r.mega_element_steps_per_s,
+                r.gbs,
+                r.dr_steps,
+                if r.dr_converged { "" } else { " (not converged)" },
+                lumped,
+                r.dr_s,
+                r.fem_dofs,
+                r.fem_s,
+                r.dr_s / r.fem_s
+            );
+        }
+        if scaling.len() >= 2 {
+            let e = exponents(scaling);
+            let _ = writeln!(
+                md,
+                "\nFitted exponents against the element count N (least squares on logs): time per step N^{:.2}, \
+                 DR steps N^{:.2}, DR time N^{:.2}, FEM time N^{:.2}.",
+                e.step_s, e.dr_steps, e.dr_s, e.fem_s
+            );
+        }
+    }
+    md
+}
+
+/// `perf.md`: the headline, damping and scaling tables under their headings.
+pub fn perf_markdown(head: &Headline, damping: &[DampingRow], scaling: &[ScalingRow]) -> String {
+    format!(
+        "# Performance (cdem perf)\n\n## Headline (paper slope, {} threads)\n\n{}\n\
+         ## Damping (paper slope, to 1e-5)\n\n{}\n## Growth with size\n\n{}",
+        rayon::current_num_threads(),
+        head.markdown(),
+        damping_markdown(damping),
+        scaling_markdown(scaling)
+    )
+}
+
+/// The scaling figure: time per step, DR time and FEM time against the
+/// element count, log-log; nothing for fewer than two rows.
+pub fn scaling_figure(path: &Path, scaling: &[ScalingRow]) -> Result<(), Error> {
+    if scaling.len() < 2 {
+        return Ok(());
+    }
+    use crate::harness::figures::{line_plot, Scale, Series};
+    let pts = |f: &dyn Fn(&ScalingRow) -> f64| scaling.iter().map(|r| (r.elements as f64, f(r))).collect::<Vec<_>>();
+    let (step, dr, fem) = (pts(&|r| r.step_s), pts(&|r| r.dr_s), pts(&|r| r.fem_s));
+    let series = [
+        Series { name: "time per step", points: &step },
+        Series { name: "DR to 1e-5", points: &dr },
+        Series { name: "FEM solve", points: &fem },
+    ];
+    line_plot(path, "Paper slope: cost against size", "elements", "wall time (s)", &series, Scale::Log, Scale::Log)
+}
+
+/// Rows as CSV (a header from the field names), written atomically.
+pub fn write_csv<T: Serialize>(path: &Path, rows: &[T]) -> Result<(), Error> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    for r in rows {
+        w.serialize(r).map_err(|e| Error::io(path, std::io::Error::other(e)))?;
+    }
+    let bytes = w.into_inner().map_err(|e| Error::io(path, std::io::Error::other(e.to_string())))?;
+    crate::output::write_atomic(path, &bytes)
+}
+
+/// Writes `damping.csv`, `scaling.csv`, `scaling.png` (two rows or more) and
+/// `perf.md` to `out`; returns the Markdown.
+pub fn write_report(
+    out: &Path,
+    head: &Headline,
+    damping: &[DampingRow],
+    scaling: &[ScalingRow],
+) -> Result<String, Error> {
+    write_csv(&out.join("damping.csv"), damping)?;
+    write_csv(&out.join("scaling.csv"), scaling)?;
+    scaling_figure(&out.join("scaling.png"), scaling)?;
+    let md = perf_markdown(head, damping, scaling);
+    crate::output::write_atomic(&out.join("perf.md"), md.as_bytes())?;
+    Ok(md)
+}

@@ -1,0 +1,96 @@
+//! The timers of the solvers, on a built model or a scene: one explicit step
+//! ([`time_steps`]: the median of 5 batches after a warm-up), dynamic
+//! relaxation from rest to the scene's tolerance ([`time_dr`]: one run), and
+//! the implicit FEM solve of the same mesh ([`time_fem`]: the best of a few
+//! end-to-end solves). Wall-clock times on whatever else the machine is
+//! doing.
+
+use std::time::Instant;
+
+use serde::Serialize;
+
+use super::bytes::step_bytes;
+use crate::error::Error;
+use crate::model::Model;
+use crate::scene::Scene;
+use crate::solver::{Solver, SolverParams, State};
+
+/// One step's cost on a model.
+#[derive(Debug, Clone, Serialize)]
+pub struct StepFigure {
+    pub elements: usize,
+    pub block_mass: bool,
+    /// Seconds per step (median of 5 batches).
+    pub step_s: f64,
+    /// Elements times steps per second (millions).
+    pub mega_element_steps_per_s: f64,
+    pub bytes_per_step: f64,
+    /// `bytes_per_step / step_s` (GB/s).
+    pub gbs: f64,
+}
+
+/// Times `steps` steps in 5 batches after 20 warm-up steps from rest; the
+/// median batch gives the time per step, [`step_bytes`] the bytes.
+pub fn time_steps(model: &Model, params: &SolverParams, steps: usize) -> Result<StepFigure, Error> {
+    let mut solver = Solver::new(model, params.clone())?;
+    let mut state = State::new(model);
+    for _ in 0..20 {
+        solver.step(model, &mut state)?;
+    }
+    let per_batch = steps.div_ceil(5).max(1);
+    let mut batches = Vec::with_capacity(5);
+    for _ in 0..5 {
+        let t = Instant::now();
+        for _ in 0..per_batch {
+            solver.step(model, &mut state)?;
+        }
+        batches.push(t.elapsed().as_secs_f64() / per_batch as f64);
+    }
+    batches.sort_by(f64::total_cmp);
+    let step_s = batches[2];
+    let block = params.uses_block_mass();
+    let bytes = step_bytes(model, block);
+    Ok(StepFigure {
+        elements: model.elements.len(),
+        block_mass: block,
+        step_s,
+        mega_element_steps_per_s: model.elements.len() as f64 / step_s / 1e6,
+        bytes_per_step: bytes,
+        gbs: bytes / step_s / 1e9,
+    })
+}
+
+/// Dynamic relaxation from rest to the scene's tolerance.
+#[derive(Debug, Clone, Serialize)]
+pub struct DrFigure {
+    pub converged: bool,
+    pub steps: usize,
+    /// `Solver::new` (time step, block masses) plus `relax`; the model is built.
+    pub seconds: f64,
+    pub max_abs_uz: f64,
+}
+
+/// Relaxes `model` from rest with `params` once, as phase 1 of a run does
+/// (to the tolerance or `params.max_steps`), without history rows.
+pub fn time_dr(model: &Model, params: &SolverParams) -> Result<DrFigure, Error> {
+    let t = Instant::now();
+    let (state, report) = crate::drivers::run::relax_elastic(model, params, usize::MAX)?;
+    let seconds = t.elapsed().as_secs_f64();
+    let max_abs_uz = state.u.chunks(3).map(|d| d[2].abs()).fold(0.0, f64::max);
+    Ok(DrFigure { converged: report.converged, steps: report.steps, seconds, max_abs_uz })
+}
+
+/// The FEM solve of the scene end to end (`fem::solve_scene`: read, perturb,
+/// assemble, factor, solve, stresses): the best of `repeats`, and the free
+/// unknowns.
+pub fn time_fem(scene: &Scene, repeats: usize) -> Result<(f64, usize), Error> {
+    let mut best = f64::INFINITY;
+    let mut dofs = 0;
+    for _ in 0..repeats.max(1) {
+        let t = Instant::now();
+        let sol = crate::drivers::solve_fem(scene)?;
+        best = best.min(t.elapsed().as_secs_f64());
+        dofs = sol.free_dofs;
+    }
+    Ok((best, dofs))
+}
