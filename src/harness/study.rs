@@ -5,7 +5,8 @@
 //!
 //! Error measure: the relative L2 error of the displacement field,
 //! mass-weighted over nodes (see [`crate::analysis::compare`]):
-//! - column: against the analytic `u_z(z)` (references/column.md) at each node;
+//! - column: against the analytic `u_z(z)` ([`registry::column_uz`],
+//!   references/column.md) at each node;
 //! - slope: against the FEM on the finest mesh (`slope-h05`, 0.5 m), sampled
 //!   at the coincident nodes (the transfinite meshes are nested). The study
 //!   meshes are not perturbed, so that they nest.
@@ -16,11 +17,12 @@ use std::path::Path;
 
 use serde::Serialize;
 
-use crate::error::Error;
+use crate::drivers::run_scene;
 use crate::drivers::solve_fem as solve_scene;
+use crate::error::Error;
 use crate::fem::FemSolution;
 use crate::harness::figures::{line_plot, Scale, Series};
-use crate::drivers::run_scene;
+use crate::harness::registry;
 use crate::scene::Scene;
 
 /// One point of the study.
@@ -43,14 +45,11 @@ trait Reference {
     fn at(&self, x: [f64; 3]) -> [f64; 3];
 }
 
+/// The analytic confined column (references/column.md).
 struct Column;
 impl Reference for Column {
     fn at(&self, x: [f64; 3]) -> [f64; 3] {
-        // references/column.md
-        let (h, rho, g, e, nu) = (40.0, 2100.0, 9.81, 3.0e8, 0.3);
-        let m = e * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
-        let z = x[2];
-        [0.0, 0.0, -rho * g * (h * z - 0.5 * z * z) / m]
+        [0.0, 0.0, registry::column_uz(x[2])]
     }
 }
 
@@ -184,7 +183,7 @@ fn study_case(
 /// One small point of the column study (10 layers, E_j = 1e11, tolerance
 /// 1e-7): (CDEM error, FEM error) against the analytic solution.
 pub fn column_base_point() -> Result<(f64, f64), Error> {
-    let scene = Scene::load(Path::new("verification/cases/column/column.toml"))?;
+    let scene = registry::COLUMN.scene()?;
     let c = cdem_point("column", "base", &with_mesh(&scene, "column.msh"), &Column)?;
     let f = fem_point("column", &with_mesh(&scene, "column.msh"), &Column)?.0;
     Ok((c.error, f.error))
@@ -194,7 +193,7 @@ pub fn column_base_point() -> Result<(f64, f64), Error> {
 /// `out/study-slope.png`.
 pub fn run_study(out: &Path, progress: &mut dyn FnMut(&str)) -> Result<Vec<StudyRow>, Error> {
     std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
-    let column = Scene::load(Path::new("verification/cases/column/column.toml"))?;
+    let column = registry::COLUMN.scene()?;
     let mut rows = study_case(
         "column",
         &column,
@@ -205,7 +204,7 @@ pub fn run_study(out: &Path, progress: &mut dyn FnMut(&str)) -> Result<Vec<Study
         &Column,
         progress,
     )?;
-    let slope = Scene::load(Path::new("verification/cases/slope/slope.toml"))?;
+    let slope = registry::SLOPE.scene()?;
     progress("slope: reference FEM on slope-h05 (0.5 m)");
     let (_, finest) = fem_point("slope", &with_mesh(&slope, "../../study/slope-h05.msh"), &Column)?;
     let reference = Nodal::new(&finest);
