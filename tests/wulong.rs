@@ -29,13 +29,13 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use cdem::model::Model;
+use cdem::drivers::{run_watched, EndState, Stage, StageSnapshots};
 use cdem::harness::figures::{section_contour, Patch};
 use cdem::harness::section::{element_mean_displacement, front_patches};
+use cdem::model::Model;
 use cdem::physics::spring::SpringStatus;
-use cdem::drivers::{run_watched, EndState, Stage, StageSnapshots};
-use cdem::solver::{RunReport, State};
 use cdem::scene::Scene;
+use cdem::solver::{RunReport, State};
 
 /// The toe and the slope height of wulong.geo (the lattice crest is at z = 85.3 m).
 const Z_TOE: f64 = 20.0;
@@ -199,7 +199,7 @@ fn element_motion(model: &Model, u: &[f64], u0: &[f64], e: usize) -> f64 {
 #[test]
 fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_water() {
     let t0 = std::time::Instant::now();
-    let scene = Scene::load(Path::new("verification/cases/wulong/wulong.toml")).unwrap();
+    let scene = cdem::harness::registry::WULONG.scene().unwrap();
     let r = run_progressive(&scene);
     let (model, sp) = (&r.model, &r.model.springs);
     println!(
