@@ -35,7 +35,8 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
     let circle = SLIP_CIRCLE;
     let fs_lem = evaluate_circle(&lem.section, Circle { xc: circle.xc, zc: circle.zc, r }, 50).unwrap().bishop.unwrap();
 
-    let scene = reg::SLOPE_SLIP.scene().unwrap();
+    // Phase 1 only: eq. 21 is taken on the elastic state.
+    let scene = reg::SLOPE_SLIP.elastic_scene().unwrap();
     let run = cdem::drivers::run_scene(&scene, &mut |_, _| {}).unwrap();
     assert!(run.summary.converged);
     let fem = cdem::drivers::solve_fem(&scene).unwrap();

@@ -76,6 +76,13 @@ impl Case {
     pub fn scene(&self) -> Result<Scene, Error> {
         Scene::load(self.path())
     }
+    /// The scene with phase 1 only (its `[failure]` dropped): the elastic
+    /// state, e.g. for eq. 21 on the slip circle of [`SLOPE_SLIP`].
+    pub fn elastic_scene(&self) -> Result<Scene, Error> {
+        let mut scene = self.scene()?;
+        scene.failure = None;
+        Ok(scene)
+    }
     /// The LEM input (for the LEM cases).
     pub fn lem_input(&self) -> Result<LemInput, Error> {
         LemInput::load(self.path())

@@ -223,7 +223,7 @@ fn limit_equilibrium(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result
 /// the K_i sign segments; Fig. 9.
 fn slip_circle(rep: &mut Report, fs_lem: f64, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
     progress("eq. 21 on the slip circle");
-    let slip_scene = reg::SLOPE_SLIP.scene()?;
+    let slip_scene = reg::SLOPE_SLIP.elastic_scene()?;
     let rs = run_scene(&slip_scene, &mut |_, _| {})?;
     let fem_s = crate::drivers::solve_fem(&slip_scene)?;
     let mesh = crate::mesh::gmsh::read_msh(&slip_scene.mesh_path())?;
