@@ -17,6 +17,9 @@
 //! - the published values ([`PAPER_MAX_ABS_UZ`], [`ACADS_SLIDE_BISHOP`], ...);
 //! - the paper slope's slip circle ([`SLIP_CIRCLE`]) and its strength;
 //! - the tolerances that a test and `cdem reproduce` both apply.
+//!
+//! Not here yet: the inputs of the performance figures ([`crate::harness::perf`]:
+//! `paper_slope`, `SLOPE_MESHES`, `LEM_CASES`), which that module still lists itself.
 
 use std::path::Path;
 
@@ -206,29 +209,29 @@ impl Reference {
 /// Standard gravity (m/s^2), as in the scenes.
 pub const GRAVITY: f64 = 9.81;
 
-/// The paper's CDEM: max vertical displacement of the elastic slope (Fig. 7), as a magnitude.
+/// The paper's CDEM: max vertical displacement of the elastic slope (Figs. 6-7), as a magnitude.
 pub const PAPER_MAX_ABS_UZ: Reference = Reference {
     value: 4.18e-2,
     source: PAPER_MD,
-    what: "max |u_z| (m) of the elastic slope, the paper's program (Liu, Li & Liu 2014, Fig. 7)",
+    what: "max |u_z| (m) of the elastic slope, the paper's program (Liu, Li & Liu 2014, Figs. 6-7)",
 };
 /// ANSYS in the paper: max vertical displacement of the elastic slope, as a magnitude.
 pub const ANSYS_MAX_ABS_UZ: Reference = Reference {
     value: 4.16e-2,
     source: PAPER_MD,
-    what: "max |u_z| (m) of the elastic slope, ANSYS (Liu, Li & Liu 2014, Fig. 7)",
+    what: "max |u_z| (m) of the elastic slope, ANSYS (Liu, Li & Liu 2014, Figs. 6-7)",
 };
-/// The paper's CDEM: max vertical (compressive) stress of the elastic slope (Fig. 6).
+/// The paper's CDEM: max vertical (compressive) stress of the elastic slope (Figs. 6-7).
 pub const PAPER_MIN_SZZ: Reference = Reference {
     value: -7.89e5,
     source: PAPER_MD,
-    what: "min sigma_zz (Pa) of the elastic slope, the paper's program (Liu, Li & Liu 2014, Fig. 6)",
+    what: "min sigma_zz (Pa) of the elastic slope, the paper's program (Liu, Li & Liu 2014, Figs. 6-7)",
 };
 /// ANSYS in the paper: max vertical (compressive) stress of the elastic slope.
 pub const ANSYS_MIN_SZZ: Reference = Reference {
     value: -7.81e5,
     source: PAPER_MD,
-    what: "min sigma_zz (Pa) of the elastic slope, ANSYS (Liu, Li & Liu 2014, Fig. 6)",
+    what: "min sigma_zz (Pa) of the elastic slope, ANSYS (Liu, Li & Liu 2014, Figs. 6-7)",
 };
 /// The paper's LEM safety factor of its slope (c = 16 kPa, phi = 18 deg).
 pub const PAPER_LEM_FS: Reference = Reference {
