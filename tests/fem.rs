@@ -87,9 +87,9 @@ fn patch_problem(mesh: &Mesh, scene: &Scene, h: [[f64; 3]; 3]) -> FemProblem {
     let adj = FaceAdjacency::build(mesh).unwrap();
     for &(c, f) in &adj.exterior {
         for n in face_nodes(mesh, c, f) {
-            for i in 0..3 {
+            for (i, h_i) in h.iter().enumerate() {
                 p.fixed[3 * n + i] = true;
-                p.prescribed[3 * n + i] = (0..3).map(|j| h[i][j] * p.coords[n][j]).sum();
+                p.prescribed[3 * n + i] = (0..3).map(|j| h_i[j] * p.coords[n][j]).sum();
             }
         }
     }
@@ -280,6 +280,9 @@ fn unit_cube_strain_energy_equals_the_continuum_value() {
     assert!(rel(energy, exact) < 1e-12, "energy {energy} vs {exact}");
 }
 
+/// Makes (or finds) the node at the mean of the given nodes, returning its index.
+type MidNode<'a> = dyn FnMut(&[usize], &mut Vec<[f64; 3]>) -> usize + 'a;
+
 /// Splits every hexahedron of a slab extruded along y (corners 0-3 on one
 /// face, 4-7 on the other, as gmsh extrudes) 2 x 2 in the section plane.
 /// Surface groups become node sets (point facets): a new node belongs to a
@@ -301,7 +304,7 @@ fn refine_slab(mesh: &Mesh) -> Mesh {
     let mut cells = Vec::new();
     for cell in &mesh.cells {
         assert_eq!(cell.kind, CellKind::Hex8);
-        let quad = |o: usize, nodes: &mut Vec<[f64; 3]>, mid: &mut dyn FnMut(&[usize], &mut Vec<[f64; 3]>) -> usize| {
+        let quad = |o: usize, nodes: &mut Vec<[f64; 3]>, mid: &mut MidNode<'_>| {
             let c = [0, 1, 2, 3].map(|k| cell.nodes[o + k]);
             let m = [0, 1, 2, 3].map(|k| mid(&[c[k], c[(k + 1) % 4]], nodes));
             let f = mid(&c, nodes);

@@ -138,18 +138,27 @@ fn with_mesh(base: &Scene, mesh: &str) -> Scene {
     s
 }
 
-/// The study of one case: `meshes` coarse to fine (paths relative to the base
-/// scene's directory), `base` index of the base mesh.
+/// The factors varied around the base point of one case.
+struct Factors<'a> {
+    /// Meshes coarse to fine (paths relative to the base scene's directory).
+    meshes: &'a [&'a str],
+    /// Index of the base mesh in `meshes`.
+    base: usize,
+    /// Joint normal moduli E_j (Pa).
+    moduli: [f64; 3],
+    /// Convergence tolerances.
+    tolerances: [f64; 3],
+}
+
+/// The study of one case.
 fn study_case(
     case: &str,
     base_scene: &Scene,
-    meshes: &[&str],
-    base: usize,
-    moduli: [f64; 3],
-    tolerances: [f64; 3],
+    factors: &Factors,
     reference: &dyn Reference,
     progress: &mut dyn FnMut(&str),
 ) -> Result<Vec<StudyRow>, Error> {
+    let Factors { meshes, base, moduli, tolerances } = *factors;
     let mut rows = Vec::new();
     let base_scene = with_mesh(base_scene, meshes[base]);
     for (k, mesh) in meshes.iter().enumerate() {
@@ -194,30 +203,24 @@ pub fn column_base_point() -> Result<(f64, f64), Error> {
 pub fn run_study(out: &Path, progress: &mut dyn FnMut(&str)) -> Result<Vec<StudyRow>, Error> {
     std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
     let column = registry::COLUMN.scene()?;
-    let mut rows = study_case(
-        "column",
-        &column,
-        &["column.msh", "../../study/column-l20.msh", "../../study/column-l40.msh"],
-        0,
-        [1e10, 1e11, 1e12],
-        [1e-3, 1e-5, 1e-7],
-        &Column,
-        progress,
-    )?;
+    let column_factors = Factors {
+        meshes: &["column.msh", "../../study/column-l20.msh", "../../study/column-l40.msh"],
+        base: 0,
+        moduli: [1e10, 1e11, 1e12],
+        tolerances: [1e-3, 1e-5, 1e-7],
+    };
+    let mut rows = study_case("column", &column, &column_factors, &Column, progress)?;
     let slope = registry::SLOPE.scene()?;
     progress("slope: reference FEM on slope-h05 (0.5 m)");
     let (_, finest) = fem_point("slope", &with_mesh(&slope, "../../study/slope-h05.msh"), &Column)?;
     let reference = Nodal::new(&finest);
-    rows.extend(study_case(
-        "slope",
-        &slope,
-        &["../../study/slope-h4.msh", "slope.msh", "../../study/slope-h1.msh"],
-        1,
-        [1e10, 1e11, 1e12],
-        [1e-3, 1e-4, 1e-5],
-        &reference,
-        progress,
-    )?);
+    let slope_factors = Factors {
+        meshes: &["../../study/slope-h4.msh", "slope.msh", "../../study/slope-h1.msh"],
+        base: 1,
+        moduli: [1e10, 1e11, 1e12],
+        tolerances: [1e-3, 1e-4, 1e-5],
+    };
+    rows.extend(study_case("slope", &slope, &slope_factors, &reference, progress)?);
     let mut w = csv::Writer::from_writer(Vec::new());
     for r in &rows {
         w.serialize(r).map_err(|e| Error::io(out, std::io::Error::other(e)))?;
