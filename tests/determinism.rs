@@ -1,15 +1,12 @@
 //! Results for a given scene and seed are bit for bit the same across runs
 //! and thread counts (forces are gathered per node in a fixed order).
 
-use std::path::Path;
-
 use cdem::drivers::run_scene;
-use cdem::scene::Scene;
 
 /// Summary (without wall time) and history of a 2000-step run of the
 /// perturbed slope, as raw bits.
 fn fingerprint(threads: usize) -> Vec<u64> {
-    let mut scene = Scene::load(Path::new("verification/cases/slope/slope.toml")).unwrap();
+    let mut scene = cdem::harness::registry::SLOPE.scene().unwrap();
     scene.solver.max_steps = 2000;
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
     let r = pool.install(|| run_scene(&scene, &mut |_, _| {})).unwrap();

@@ -10,6 +10,7 @@ use std::path::Path;
 use cdem::drivers::solve_fem as solve_scene;
 use cdem::fem::element::element_matrices;
 use cdem::fem::{solve, FemProblem, FemSolution};
+use cdem::harness::registry::{self as reg, column_k0, column_szz, column_uz, CONFINED_COLUMN};
 use cdem::mesh::adjacency::{face_nodes, FaceAdjacency};
 use cdem::mesh::gmsh::read_msh;
 use cdem::mesh::perturb::SplitMix64;
@@ -18,23 +19,13 @@ use cdem::physics::material::{Lame, YoungPoisson};
 use cdem::scene::Scene;
 use cdem::{Error, SolveError};
 
-// references/column.md
-const H: f64 = 40.0;
-const RHO: f64 = 2100.0;
-const G: f64 = 9.81;
-const E: f64 = 3.0e8;
-const NU: f64 = 0.3;
-const AREA: f64 = 16.0;
+// The column's rock and height (references/column.md, via the registry).
+const H: f64 = CONFINED_COLUMN.height;
+const RHO: f64 = CONFINED_COLUMN.density;
+const G: f64 = CONFINED_COLUMN.gravity;
+const E: f64 = CONFINED_COLUMN.young;
+const NU: f64 = CONFINED_COLUMN.poisson;
 
-fn m_modulus() -> f64 {
-    E * (1.0 - NU) / ((1.0 + NU) * (1.0 - 2.0 * NU))
-}
-fn uz_exact(z: f64) -> f64 {
-    -RHO * G * (H * z - 0.5 * z * z) / m_modulus()
-}
-fn szz_exact(z: f64) -> f64 {
-    -RHO * G * (H - z)
-}
 fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs()
 }
@@ -44,7 +35,7 @@ fn scene(path: &str) -> Scene {
 }
 
 fn column() -> Scene {
-    scene("verification/cases/column/column-merged.toml")
+    reg::COLUMN_MERGED.scene().unwrap()
 }
 
 fn centroid(sol: &FemSolution, c: usize) -> [f64; 3] {
@@ -61,7 +52,7 @@ fn confined_column_settlement_and_stress_are_nodally_exact() {
     let mut err_u: f64 = 0.0;
     for (x, u) in sol.coords.iter().zip(sol.u.chunks(3)) {
         if x[2] > 0.0 {
-            err_u = err_u.max(rel(u[2], uz_exact(x[2])));
+            err_u = err_u.max(rel(u[2], column_uz(x[2])));
         }
         assert!(u[0].abs() < 1e-15 && u[1].abs() < 1e-15, "lateral displacement {u:?} at {x:?}");
     }
@@ -70,21 +61,21 @@ fn confined_column_settlement_and_stress_are_nodally_exact() {
     let mut err_s: f64 = 0.0;
     for (c, s) in sol.stress.iter().enumerate() {
         let z = centroid(&sol, c)[2];
-        err_s = err_s.max(rel(s[2], szz_exact(z)));
-        let k0 = NU / (1.0 - NU);
+        err_s = err_s.max(rel(s[2], column_szz(z)));
+        let k0 = column_k0();
         assert!(rel(s[0], k0 * s[2]) < 1e-9 && rel(s[1], k0 * s[2]) < 1e-9, "sigma_xx, sigma_yy of element {c}");
     }
     // Base stress from the bottom reactions.
     let rz: f64 = (0..sol.coords.len()).filter(|&n| sol.coords[n][2] == 0.0).map(|n| sol.reaction[3 * n + 2]).sum();
-    let base = -rz / AREA;
+    let base = -rz / CONFINED_COLUMN.area;
     println!(
         "column FEM: top u_z {top:.10e} (exact {:.10e}, max nodal err {err_u:.1e}); element sigma_zz max err {err_s:.1e}; base {base:.6e} (exact {:.6e})",
-        uz_exact(H),
-        szz_exact(0.0)
+        column_uz(H),
+        column_szz(0.0)
     );
-    assert!(rel(top, uz_exact(H)) < 1e-9 && err_u < 1e-9, "u_z error {err_u:e}");
+    assert!(rel(top, column_uz(H)) < 1e-9 && err_u < 1e-9, "u_z error {err_u:e}");
     assert!(err_s < 1e-9, "element sigma_zz error {err_s:e}");
-    assert!(rel(base, szz_exact(0.0)) < 1e-9, "base stress {base}");
+    assert!(rel(base, column_szz(0.0)) < 1e-9, "base stress {base}");
 }
 
 /// Imposes `u = Hx` on every node of the boundary, no gravity.
@@ -96,9 +87,9 @@ fn patch_problem(mesh: &Mesh, scene: &Scene, h: [[f64; 3]; 3]) -> FemProblem {
     let adj = FaceAdjacency::build(mesh).unwrap();
     for &(c, f) in &adj.exterior {
         for n in face_nodes(mesh, c, f) {
-            for (i, row) in h.iter().enumerate() {
+            for (i, h_i) in h.iter().enumerate() {
                 p.fixed[3 * n + i] = true;
-                p.prescribed[3 * n + i] = (0..3).map(|j| row[j] * p.coords[n][j]).sum();
+                p.prescribed[3 * n + i] = (0..3).map(|j| h_i[j] * p.coords[n][j]).sum();
             }
         }
     }
@@ -289,6 +280,9 @@ fn unit_cube_strain_energy_equals_the_continuum_value() {
     assert!(rel(energy, exact) < 1e-12, "energy {energy} vs {exact}");
 }
 
+/// Makes (or finds) the node at the mean of the given nodes, returning its index.
+type MidNode<'a> = dyn FnMut(&[usize], &mut Vec<[f64; 3]>) -> usize + 'a;
+
 /// Splits every hexahedron of a slab extruded along y (corners 0-3 on one
 /// face, 4-7 on the other, as gmsh extrudes) 2 x 2 in the section plane.
 /// Surface groups become node sets (point facets): a new node belongs to a
@@ -310,8 +304,7 @@ fn refine_slab(mesh: &Mesh) -> Mesh {
     let mut cells = Vec::new();
     for cell in &mesh.cells {
         assert_eq!(cell.kind, CellKind::Hex8);
-        type Midpoint<'a> = dyn FnMut(&[usize], &mut Vec<[f64; 3]>) -> usize + 'a;
-        let quad = |o: usize, nodes: &mut Vec<[f64; 3]>, mid: &mut Midpoint| {
+        let quad = |o: usize, nodes: &mut Vec<[f64; 3]>, mid: &mut MidNode<'_>| {
             let c = [0, 1, 2, 3].map(|k| cell.nodes[o + k]);
             let m = [0, 1, 2, 3].map(|k| mid(&[c[k], c[(k + 1) % 4]], nodes));
             let f = mid(&c, nodes);
@@ -350,7 +343,7 @@ fn refine_slab(mesh: &Mesh) -> Mesh {
 #[test]
 fn slope_displacement_and_stress_converge_under_refinement() {
     // The case as CDEM sees it (perturbed, 1000 hexahedra).
-    let s = scene("verification/cases/slope/slope.toml");
+    let s = reg::SLOPE.scene().unwrap();
     let sol = solve_scene(&s).unwrap();
     let t = sol.timings;
     println!(
@@ -455,7 +448,7 @@ fn outputs_have_the_keys_of_cdem_run() {
 
 #[test]
 fn fem_agrees_with_scikit_fem_on_the_unperturbed_column_and_slope() {
-    let text = std::fs::read_to_string("references/skfem.json").unwrap();
+    let text = std::fs::read_to_string(reg::SKFEM_JSON).unwrap();
     let refs: serde_json::Value = serde_json::from_str(&text).unwrap();
     let num = |v: &serde_json::Value| v.as_f64().unwrap();
     for (name, case) in refs["cases"].as_object().unwrap() {
@@ -489,7 +482,7 @@ fn fem_agrees_with_scikit_fem_on_the_unperturbed_column_and_slope() {
                     v,
                     r,
                     1e-9,
-                    "references/skfem.md",
+                    reg::SKFEM_MD,
                     sol.summary.wall_s,
                 ));
             }

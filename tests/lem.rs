@@ -4,20 +4,21 @@
 
 use std::path::Path;
 
+use cdem::harness::registry as reg;
 use cdem::lem::{
     analyse, evaluate_circle, slices_of, Circle, LemInput, LemResult, LemSection, LowerBound, Material, Method, Mode,
     Zone,
 };
 
-// ACADS (1989) problem 1(a); Rocscience Slide verification manual, problem 1.
-const ACADS_REFEREE: f64 = 1.00;
-const ACADS_SLIDE_BISHOP: f64 = 0.987;
-const ACADS_SLIDE_SPENCER: f64 = 0.986;
+// ACADS (1989) problem 1(a); Rocscience Slide verification manual, problem 1;
 // Liu, Li & Liu (2014): the paper's LEM safety factor of its slope.
-const PAPER_LEM_FS: f64 = 1.084;
+const ACADS_REFEREE: f64 = reg::ACADS_REFEREE.value;
+const ACADS_SLIDE_BISHOP: f64 = reg::ACADS_SLIDE_BISHOP.value;
+const ACADS_SLIDE_SPENCER: f64 = reg::ACADS_SLIDE_SPENCER.value;
+const PAPER_LEM_FS: f64 = reg::PAPER_LEM_FS.value;
 
-fn load(path: &str) -> LemInput {
-    LemInput::load(Path::new(path)).unwrap()
+fn load(case: reg::Case) -> LemInput {
+    case.lem_input().unwrap()
 }
 
 fn parse(text: &str) -> cdem::Result<LemInput> {
@@ -47,7 +48,7 @@ fn acads_section(c: f64, phi: f64) -> LemSection {
 
 #[test]
 fn acads_1a_bishop_agrees_with_slide_and_the_referee() {
-    let r = analyse(&load("verification/lem/acads-1a.toml")).unwrap();
+    let r = analyse(&load(reg::LEM_ACADS_1A)).unwrap();
     let c = critical(&r, Method::Bishop);
     let (lo, hi) = both_bands(ACADS_SLIDE_BISHOP, ACADS_REFEREE);
     println!("ACADS 1(a) Bishop {:.5} in [{lo:.5}, {hi:.5}]? circle ({:.3}, {:.3}, {:.3})", c.fs, c.xc, c.zc, c.r);
@@ -65,53 +66,22 @@ fn acads_1a_bishop_agrees_with_slide_and_the_referee() {
 /// search finds a slightly more critical circle than Slide's).
 #[test]
 fn acads_1a_spencer_agrees_with_slide_and_is_reported_against_the_referee() {
-    let r = analyse(&load("verification/lem/acads-1a.toml")).unwrap();
+    let r = analyse(&load(reg::LEM_ACADS_1A)).unwrap();
     let c = critical(&r, Method::Spencer);
     let b = critical(&r, Method::Bishop);
     println!("ACADS 1(a) Spencer {:.5}: Slide {ACADS_SLIDE_SPENCER}, referee {ACADS_REFEREE}", c.fs);
+    let (case, tol, t) = ("ACADS 1(a)", reg::TOL_ACADS, r.wall_s);
     cdem::harness::report::record(
         "lem_acads",
         &[
-            cdem::harness::report::Check::new(
-                "ACADS 1(a)",
-                "Bishop FS vs Slide",
-                b.fs,
-                ACADS_SLIDE_BISHOP,
-                0.015,
-                "references/lem.md",
-                r.wall_s,
-            ),
-            cdem::harness::report::Check::new(
-                "ACADS 1(a)",
-                "Bishop FS vs referee",
-                b.fs,
-                ACADS_REFEREE,
-                0.015,
-                "references/lem.md",
-                r.wall_s,
-            ),
-            cdem::harness::report::Check::new(
-                "ACADS 1(a)",
-                "Spencer FS vs Slide",
-                c.fs,
-                ACADS_SLIDE_SPENCER,
-                0.015,
-                "references/lem.md",
-                r.wall_s,
-            ),
-            cdem::harness::report::Check::new(
-                "ACADS 1(a)",
-                "Spencer FS vs referee (1.6 % low, see lem.md)",
-                c.fs,
-                ACADS_REFEREE,
-                f64::NAN,
-                "references/lem.md",
-                r.wall_s,
-            ),
+            reg::ACADS_SLIDE_BISHOP.check(case, "Bishop FS vs Slide", b.fs, tol, t),
+            reg::ACADS_REFEREE.check(case, "Bishop FS vs referee", b.fs, tol, t),
+            reg::ACADS_SLIDE_SPENCER.check(case, "Spencer FS vs Slide", c.fs, tol, t),
+            reg::ACADS_REFEREE.check(case, "Spencer FS vs referee (1.6 % low, see lem.md)", c.fs, f64::NAN, t),
         ],
     );
     assert!(
-        (c.fs - ACADS_SLIDE_SPENCER).abs() <= 0.015 * ACADS_SLIDE_SPENCER,
+        (c.fs - ACADS_SLIDE_SPENCER).abs() <= tol * ACADS_SLIDE_SPENCER,
         "Spencer FS {} vs Slide {ACADS_SLIDE_SPENCER}",
         c.fs
     );
@@ -121,7 +91,7 @@ fn acads_1a_spencer_agrees_with_slide_and_is_reported_against_the_referee() {
 fn acads_1a_method_ordering_is_textbook() {
     // Ordinary (no interslice forces) is conservative for phi > 0; Bishop
     // and Spencer agree within 1 % on circles.
-    let r = analyse(&load("verification/lem/acads-1a.toml")).unwrap();
+    let r = analyse(&load(reg::LEM_ACADS_1A)).unwrap();
     let (o, b, s) = (r.fs.ordinary.unwrap(), r.fs.bishop.unwrap(), r.fs.spencer.unwrap());
     println!(
         "ACADS 1(a): ordinary {o:.4}, Bishop {b:.4}, Spencer {s:.4}; theta {:?} deg",
@@ -133,22 +103,20 @@ fn acads_1a_method_ordering_is_textbook() {
 
 #[test]
 fn paper_slope_bishop_matches_the_papers_lem() {
-    let r = analyse(&load("verification/lem/paper-slope.toml")).unwrap();
+    let r = analyse(&load(reg::LEM_PAPER_SLOPE)).unwrap();
     let c = critical(&r, Method::Bishop);
     println!("paper slope Bishop {:.4} (paper 1.084), circle ({:.3}, {:.3}, {:.3})", c.fs, c.xc, c.zc, c.r);
     cdem::harness::report::record(
         "lem_paper_slope",
-        &[cdem::harness::report::Check::new(
+        &[reg::PAPER_LEM_FS.check(
             "paper slope LEM",
             "Bishop FS (tolerance: 0.01 absolute)",
             c.fs,
-            PAPER_LEM_FS,
-            0.01 / PAPER_LEM_FS,
-            "references/paper.md",
+            reg::TOL_PAPER_LEM_FS_ABSOLUTE / PAPER_LEM_FS,
             r.wall_s,
         )],
     );
-    assert!((c.fs - PAPER_LEM_FS).abs() <= 0.01, "Bishop FS {}", c.fs);
+    assert!((c.fs - PAPER_LEM_FS).abs() <= reg::TOL_PAPER_LEM_FS_ABSOLUTE, "Bishop FS {}", c.fs);
     for m in Method::ALL {
         let c = critical(&r, m);
         assert!(c.zc - c.r >= -1e-9 || c.xc < c.exit[0] || c.xc > c.entry[0], "{m:?} circle below z = 0");
@@ -157,8 +125,8 @@ fn paper_slope_bishop_matches_the_papers_lem() {
 
 #[test]
 fn section_from_the_mesh_equals_the_explicit_section() {
-    let a = analyse(&load("verification/lem/paper-slope.toml")).unwrap();
-    let b = analyse(&load("verification/lem/paper-slope-explicit.toml")).unwrap();
+    let a = analyse(&load(reg::LEM_PAPER_SLOPE)).unwrap();
+    let b = analyse(&load(reg::LEM_PAPER_SLOPE_EXPLICIT)).unwrap();
     for m in Method::ALL {
         let (x, y) = (a.fs.get(m).unwrap(), b.fs.get(m).unwrap());
         assert!((x - y).abs() < 1e-6, "{m:?}: mesh {x}, explicit {y}");
@@ -269,7 +237,7 @@ fn spencer_moment_equation_at_zero_inclination_is_bishop() {
 
 #[test]
 fn search_is_deterministic_and_independent_of_threads() {
-    let input = load("verification/lem/acads-1a.toml");
+    let input = load(reg::LEM_ACADS_1A);
     let a = analyse(&input).unwrap();
     let b = analyse(&input).unwrap();
     let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap().install(|| analyse(&input).unwrap());
@@ -290,7 +258,7 @@ fn search_is_deterministic_and_independent_of_threads() {
 
 #[test]
 fn mirrored_section_gives_the_mirrored_answer() {
-    let text = std::fs::read_to_string("verification/lem/acads-1a.toml").unwrap();
+    let text = std::fs::read_to_string(reg::LEM_ACADS_1A.input).unwrap();
     let mirrored = text
         .replace(
             "ground = [[20.0, 25.0], [30.0, 25.0], [50.0, 35.0], [70.0, 35.0]]",
@@ -298,7 +266,7 @@ fn mirrored_section_gives_the_mirrored_answer() {
         )
         .replace("facing = \"left\"", "facing = \"right\"");
     assert_ne!(text, mirrored);
-    let a = analyse(&load("verification/lem/acads-1a.toml")).unwrap();
+    let a = analyse(&load(reg::LEM_ACADS_1A)).unwrap();
     let b = analyse(&parse(&mirrored).unwrap()).unwrap();
     for m in Method::ALL {
         let (x, y) = (critical(&a, m), critical(&b, m));
@@ -345,7 +313,7 @@ fn zones_of_one_material_match_the_homogeneous_section() {
 
 #[test]
 fn input_errors_name_the_key() {
-    let base = std::fs::read_to_string("verification/lem/acads-1a.toml").unwrap();
+    let base = std::fs::read_to_string(reg::LEM_ACADS_1A.input).unwrap();
     let cases = [
         (base.replace("z_min = 20.0", "z_min = 20.0\nwater = 1.0"), "water"),
         (base.replace("friction_angle = 19.6", "friction_angle = 95.0"), "material.friction_angle"),
@@ -367,7 +335,7 @@ fn input_errors_name_the_key() {
 
 #[test]
 fn an_inadmissible_given_circle_is_an_error_not_a_panic() {
-    let base = std::fs::read_to_string("verification/lem/acads-1a.toml").unwrap();
+    let base = std::fs::read_to_string(reg::LEM_ACADS_1A.input).unwrap();
     let search_start = base.find("[search]").unwrap();
     let text = format!("{}\n[circle]\nxc = 40.0\nzc = 45.0\nr = 40.0\n", &base[..search_start]);
     let err = analyse(&parse(&text).unwrap()).unwrap_err().to_string();

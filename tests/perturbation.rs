@@ -8,7 +8,6 @@ use cdem::mesh::gmsh::read_msh;
 use cdem::mesh::perturb::{local_edge_length, perturb_nodes};
 use cdem::mesh::shape::dot;
 use cdem::mesh::Mesh;
-use cdem::scene::Scene;
 use cdem::{Error, ModelError};
 
 fn slope() -> Mesh {
@@ -65,7 +64,7 @@ fn boundary_nodes_stay_on_their_planes() {
 fn too_large_a_ratio_is_a_typed_error_naming_the_element() {
     // Offsets of nearly half an edge at both ends of the skewed wedges at the
     // toe invert them; the scene-level error names the gmsh element tag.
-    let mut scene = Scene::load(Path::new("verification/cases/slope/slope.toml")).unwrap();
+    let mut scene = cdem::harness::registry::SLOPE.scene().unwrap();
     scene.perturbation.ratio = 0.45;
     scene.perturbation.seed = 5;
     match cdem::drivers::build_model(&scene) {

@@ -13,28 +13,25 @@
 use std::path::Path;
 
 use cdem::analysis::safety_factors;
-use cdem::analysis::slip::{from_springs, spring_points, SlipCircle};
+use cdem::analysis::slip::{from_springs, spring_points};
 use cdem::drivers::{run_watched, EndState, StageSnapshots};
-use cdem::harness::figures::{section_contour, Patch};
-use cdem::harness::section::{element_mean_displacement, front_patches};
-use cdem::scene::Scene;
+use cdem::harness::registry::{self as reg, SLIP_CIRCLE};
+use cdem::harness::reproduce::stage_figures;
 use cdem::solver::State;
-
-const CIRCLE: SlipCircle = SlipCircle { xc: 24.006, zc: 63.222, toe: [20.0, 20.0] };
 
 #[test]
 fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
-    let scene = Scene::load(Path::new("verification/cases/slope-slip/slope-slip.toml")).unwrap();
+    let scene = reg::SLOPE_SLIP.scene().unwrap();
     let mut snapshots = StageSnapshots::default();
     let run = run_watched(&scene, &mut snapshots).unwrap();
     let r = run.failure.as_ref().expect("phase 2 ran");
-    let tan_phi = 18f64.to_radians().tan();
+    let tan_phi = reg::SLIP_FRICTION_DEG.to_radians().tan();
 
     // Elastic K_i per station (springs), from the end of phase 1.
     let mut elastic = State::new(&run.model);
     elastic.u = r.u_elastic.clone();
-    let pts = from_springs(&run.model, &elastic.u, &elastic.springs, "slip", &CIRCLE).unwrap();
-    let k = safety_factors(&pts, 16e3, tan_phi);
+    let pts = from_springs(&run.model, &elastic.u, &elastic.springs, "slip", &SLIP_CIRCLE).unwrap();
+    let k = safety_factors(&pts, reg::SLIP_COHESION, tan_phi);
     let friction_only = safety_factors(&pts, 0.0, tan_phi);
     println!("elastic eq. 21: K = {:.4}; friction only (c lost): {:.4}", k.k, friction_only.k);
     assert!(friction_only.k < 1.0, "without cohesion the surface must be over-stressed");
@@ -59,7 +56,7 @@ fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
     let mut all_failed = vec![true; zones.len()];
     let mut first_step = usize::MAX;
     for s in (0..sp.len()).filter(|&s| sp.interface[s] == iface) {
-        let z = zone_of(CIRCLE.frame(run.model.x0[sp.a[s] as usize]).0);
+        let z = zone_of(SLIP_CIRCLE.frame(run.model.x0[sp.a[s] as usize]).0);
         match r.failed_at[s] {
             Some(step) => {
                 first[z] = first[z].min(step);
@@ -72,7 +69,7 @@ fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
     // Exactly the springs that violate eq. 17-18 at the elastic state, in
     // their own frame (recomputed here from the spring law), fail at the
     // first phase-2 step.
-    let (c, t_strength) = (16e3, 16e3);
+    let (c, t_strength) = (reg::SLIP_COHESION, reg::SLIP_TENSILE);
     for s in (0..sp.len()).filter(|&s| sp.interface[s] == iface) {
         let (a, b) = (sp.a[s] as usize, sp.b[s] as usize);
         let n = sp.normal[s];
@@ -89,7 +86,7 @@ fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
         );
     }
     // And they are where K_i (circle frame, eq. 22) is lowest.
-    let per_spring = spring_points(&run.model, &elastic.u, &elastic.springs, "slip", &CIRCLE).unwrap();
+    let per_spring = spring_points(&run.model, &elastic.u, &elastic.springs, "slip", &SLIP_CIRCLE).unwrap();
     let ki = |p: &cdem::analysis::SurfacePoint| (p.sigma_n * tan_phi + c) / p.tau;
     let (mut first_k, mut later_k) = (Vec::new(), Vec::new());
     for (s, p) in &per_spring {
@@ -135,22 +132,9 @@ fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
     }
     insta::assert_yaml_snapshot!("slope_failure_sequence", sequence);
 
-    // Fig. 10: horizontal and vertical displacement since phase 1 at three stages.
+    // Fig. 10: horizontal and vertical displacement since phase 1 at three
+    // stages (the figures of `cdem reproduce`).
     std::fs::create_dir_all("target/figures").unwrap();
-    let n = r.stages.len();
-    for (tag, idx) in [("early", 0), ("middle", n / 2), ("end", n - 1)] {
-        let du: Vec<f64> = snapshots.u[idx].iter().zip(&r.u_elastic).map(|(a, b)| a - b).collect();
-        for (comp, name) in [(0, "u_x"), (2, "u_z")] {
-            let p: Vec<Patch> = front_patches(&run.model, |e| element_mean_displacement(&run.model, &du, e, comp));
-            let title = format!("Phase 2, step {}: {name} since phase 1", r.stages[idx].step);
-            section_contour(
-                Path::new(&format!("target/figures/fig10-{tag}-{name}.png")),
-                &title,
-                &format!("{name} (m)"),
-                &p,
-                &[],
-            )
-            .unwrap();
-        }
-    }
+    let files = stage_figures(&run, &snapshots, Path::new("target/figures"), "fig10").unwrap();
+    assert_eq!(files.len(), 6);
 }

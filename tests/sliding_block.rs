@@ -7,17 +7,12 @@
 //! the bonded block to equilibrium; then, from rest, the contact is
 //! frictional (failure on) and time runs with physical masses and no damping.
 
-use std::path::Path;
-
-use cdem::scene::Scene;
+use cdem::harness::registry::{self as reg, sliding_block_acceleration, GRAVITY as G, SLIDING_BLOCK_PHI_DEG};
 use cdem::solver::{DampingKind, Solver, State};
-
-const G: f64 = 9.81;
-const PHI_DEG: f64 = 20.0;
 
 /// Mean x displacement of the block's nodes after `t_end` seconds of sliding.
 fn slide(theta_deg: f64, t_end: f64) -> (f64, f64) {
-    let mut scene = Scene::load(Path::new("tests/fixtures/block-on-plane.toml")).unwrap();
+    let mut scene = reg::SLIDING_BLOCK.scene().unwrap();
     let th = theta_deg.to_radians();
     scene.loads.gravity = [G * th.sin(), 0.0, -G * th.cos()];
     let model = cdem::drivers::build_model(&scene).unwrap();
@@ -67,8 +62,7 @@ fn block_below_the_friction_angle_stays_at_rest() {
 
 #[test]
 fn block_above_the_friction_angle_slides_with_the_coulomb_acceleration() {
-    let (th, phi) = (30f64.to_radians(), PHI_DEG.to_radians());
-    let analytic = G * (th.sin() - th.cos() * phi.tan());
+    let analytic = sliding_block_acceleration(30.0, SLIDING_BLOCK_PHI_DEG);
     let (x, t) = slide(30.0, 0.5);
     let a = 2.0 * x / (t * t);
     println!("theta 30 deg, phi 20 deg: a = {a:.4} m/s^2 (analytic {analytic:.4})");
@@ -80,7 +74,7 @@ fn block_above_the_friction_angle_slides_with_the_coulomb_acceleration() {
             a,
             analytic,
             0.02,
-            "references/sliding-block.md",
+            reg::SLIDING_BLOCK_MD,
             0.0,
         )],
     );

@@ -1,4 +1,4 @@
-//! Eq. 21 and 22 on the LEM critical surface of the paper slope (docs/method.md
+//! Eq. 21 and 22 on the LEM critical surface of the paper slope (DESIGN.md
 //! section 4), on the conforming mesh verification/cases/slope-slip/ whose
 //! interface "slip" is the Bishop critical circle. The paper: LEM 1.084, eq. 21
 //! from its CDEM 1.086 (references/paper.md); the LEM value here is our
@@ -10,23 +10,14 @@
 
 use std::path::Path;
 
-use cdem::analysis::slip::{from_springs, from_stresses, SlipCircle};
+use cdem::analysis::slip::{from_springs, from_stresses};
 use cdem::analysis::{safety_factors, sign_segments, Segment, SurfacePoint};
 use cdem::harness::figures::{line_plot, section_contour, Scale, Series};
+use cdem::harness::registry::{self as reg, MIN_SEGMENT, PAPER_EQ21_K, PAPER_LEM_FS, SLIP_CIRCLE};
 use cdem::harness::report::Check;
 use cdem::harness::section::element_mean_displacement;
+use cdem::lem::evaluate_circle;
 use cdem::lem::Circle;
-use cdem::lem::{evaluate_circle, LemInput};
-use cdem::scene::Scene;
-
-/// The circle of slope-slip.geo (centre, through the toe).
-const XC: f64 = 24.006;
-const ZC: f64 = 63.222;
-const TOE: [f64; 2] = [20.0, 20.0];
-/// Minimum sign-segment length (m): one element along the surface.
-const MIN_SEGMENT: f64 = 2.0;
-const C: f64 = 16e3;
-const PHI_DEG: f64 = 18.0;
 
 fn segments(p: &[SurfacePoint], k_i: &[f64]) -> Vec<Segment> {
     let s: Vec<f64> = p.iter().map(|q| q.s).collect();
@@ -39,29 +30,34 @@ fn describe(seg: &[Segment]) -> Vec<String> {
 
 #[test]
 fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
-    let r = ((TOE[0] - XC).powi(2) + (TOE[1] - ZC).powi(2)).sqrt();
-    let lem = LemInput::load(Path::new("verification/lem/paper-slope.toml")).unwrap();
-    let fs_lem = evaluate_circle(&lem.section, Circle { xc: XC, zc: ZC, r }, 50).unwrap().bishop.unwrap();
+    let r = reg::slip_circle_radius();
+    let lem = reg::LEM_PAPER_SLOPE.lem_input().unwrap();
+    let circle = SLIP_CIRCLE;
+    let fs_lem = evaluate_circle(&lem.section, Circle { xc: circle.xc, zc: circle.zc, r }, 50).unwrap().bishop.unwrap();
 
-    let mut scene = Scene::load(Path::new("verification/cases/slope-slip/slope-slip.toml")).unwrap();
-    scene.failure = None; // the elastic state: phase 1 only
+    // Phase 1 only: eq. 21 is taken on the elastic state.
+    let scene = reg::SLOPE_SLIP.elastic_scene().unwrap();
     let run = cdem::drivers::run_scene(&scene, &mut |_, _| {}).unwrap();
     assert!(run.summary.converged);
     let fem = cdem::drivers::solve_fem(&scene).unwrap();
     let mesh = cdem::mesh::gmsh::read_msh(&scene.mesh_path()).unwrap();
-    let circle = SlipCircle { xc: XC, zc: ZC, toe: TOE };
-    let tan_phi = PHI_DEG.to_radians().tan();
+    let (c, tan_phi) = (reg::SLIP_COHESION, reg::SLIP_FRICTION_DEG.to_radians().tan());
 
     let springs = from_springs(&run.model, &run.state.u, &run.state.springs, "slip", &circle).unwrap();
     let cdem_stress =
         from_stresses(&mesh, &run.model.mesh_coords, "slip", &circle, run.stress.as_ref().unwrap()).unwrap();
     let fem_stress = from_stresses(&mesh, &fem.coords, "slip", &circle, &fem.stress).unwrap();
-    let k_springs = safety_factors(&springs, C, tan_phi);
-    let k_cdem = safety_factors(&cdem_stress, C, tan_phi);
-    let k_fem = safety_factors(&fem_stress, C, tan_phi);
+    let k_springs = safety_factors(&springs, c, tan_phi);
+    let k_cdem = safety_factors(&cdem_stress, c, tan_phi);
+    let k_fem = safety_factors(&fem_stress, c, tan_phi);
     let rel = |k: f64| (k - fs_lem) / fs_lem;
-    println!("LEM Bishop on the slip circle: {fs_lem:.4} (paper LEM 1.084)");
-    println!("eq. 21 CDEM springs: {:.4} ({:+.2} %; paper 1.086)", k_springs.k, 100.0 * rel(k_springs.k));
+    println!("LEM Bishop on the slip circle: {fs_lem:.4} (paper LEM {})", PAPER_LEM_FS.value);
+    println!(
+        "eq. 21 CDEM springs: {:.4} ({:+.2} %; paper {})",
+        k_springs.k,
+        100.0 * rel(k_springs.k),
+        PAPER_EQ21_K.value
+    );
     println!("eq. 21 CDEM stresses: {:.4} ({:+.2} %)", k_cdem.k, 100.0 * rel(k_cdem.k));
     println!("eq. 21 FEM stresses: {:.4} ({:+.2} %)", k_fem.k, 100.0 * rel(k_fem.k));
 
@@ -74,8 +70,8 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
                 "eq. 21 K from CDEM springs vs LEM Bishop",
                 k_springs.k,
                 fs_lem,
-                0.02,
-                "references/lem.md",
+                reg::TOL_EQ21_VS_LEM,
+                reg::LEM_MD,
                 t,
             ),
             Check::new(
@@ -84,7 +80,7 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
                 k_cdem.k,
                 k_fem.k,
                 0.005,
-                "cdem fem",
+                reg::FEM_SAME_MESH,
                 t,
             ),
             Check::new(
@@ -93,23 +89,15 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
                 k_fem.k,
                 fs_lem,
                 f64::NAN,
-                "references/lem.md",
+                reg::LEM_MD,
                 t,
             ),
-            Check::new(
-                "paper slope, slip circle",
-                "LEM Bishop vs paper LEM",
-                fs_lem,
-                1.084,
-                f64::NAN,
-                "references/paper.md",
-                t,
-            ),
+            PAPER_LEM_FS.check("paper slope, slip circle", "LEM Bishop vs paper LEM", fs_lem, f64::NAN, t),
         ],
     );
     // The paper's comparison: eq. 21 from the CDEM spring forces on the
     // conforming interface against the LEM on the same surface.
-    assert!(rel(k_springs.k).abs() < 0.02, "eq. 21 (springs) {:.4} vs LEM {fs_lem:.4}", k_springs.k);
+    assert!(rel(k_springs.k).abs() < reg::TOL_EQ21_VS_LEM, "eq. 21 (springs) {:.4} vs LEM {fs_lem:.4}", k_springs.k);
     // Two solvers of the same elastic problem give the same stress-based K.
     assert!(((k_cdem.k - k_fem.k) / k_fem.k).abs() < 0.005, "CDEM {:.4} vs FEM {:.4}", k_cdem.k, k_fem.k);
 
@@ -132,14 +120,7 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
     let patches = cdem::harness::section::front_patches(&run.model, |e| {
         element_mean_displacement(&run.model, &run.state.u, e, 2)
     });
-    let arc: Vec<(f64, f64)> = (0..=100)
-        .map(|k| {
-            let a0 = (TOE[1] - ZC).atan2(TOE[0] - XC);
-            let a1 = (40.0 - ZC).atan2((r * r - (40.0 - ZC).powi(2)).sqrt());
-            let a = a0 + (a1 - a0) * k as f64 / 100.0;
-            (XC + r * a.cos(), ZC + r * a.sin())
-        })
-        .collect();
+    let arc = reg::slip_arc();
     section_contour(
         Path::new("target/figures/fig9-surface.png"),
         "Slip surface (LEM critical circle) on u_z",

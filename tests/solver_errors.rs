@@ -2,14 +2,12 @@
 //! energy blow-up error naming the step and node, a non-finite state is a
 //! NonFinite error, and running out of steps is `converged: false`.
 
-use std::path::Path;
-
 use cdem::scene::Scene;
 use cdem::solver::{DampingKind, Solver, State};
 use cdem::SolveError;
 
 fn column() -> (Scene, cdem::model::Model) {
-    let scene = Scene::load(Path::new("verification/cases/column/column.toml")).unwrap();
+    let scene = cdem::harness::registry::COLUMN.scene().unwrap();
     let model = cdem::drivers::build_model(&scene).unwrap();
     (scene, model)
 }

@@ -4,6 +4,8 @@
 //! is nodally exact for this 1-D problem; CDEM with E_j/L = 1e11 Pa/m is
 //! within the 1 % of the core issue (series joint compliance, about 0.1 %).
 
+use cdem::harness::registry as reg;
+
 #[test]
 fn column_point_of_the_study_fem_exact_cdem_within_one_percent() {
     let (cdem, fem) = cdem::harness::study::column_base_point().unwrap();
@@ -16,8 +18,8 @@ fn column_point_of_the_study_fem_exact_cdem_within_one_percent() {
                 "CDEM relative L2 error of u",
                 cdem,
                 0.0,
-                0.01,
-                "references/column.md",
+                reg::TOL_COLUMN_SPRINGS,
+                reg::COLUMN_MD,
                 0.0,
             ),
             cdem::harness::report::Check::new(
@@ -26,12 +28,12 @@ fn column_point_of_the_study_fem_exact_cdem_within_one_percent() {
                 fem,
                 0.0,
                 1e-10,
-                "references/column.md",
+                reg::COLUMN_MD,
                 0.0,
             ),
         ],
     );
     assert!(fem < 1e-10, "FEM error {fem}");
-    assert!(cdem < 0.01, "CDEM error {cdem}");
+    assert!(cdem < reg::TOL_COLUMN_SPRINGS, "CDEM error {cdem}");
     assert!(cdem > 1e-5, "CDEM with springs cannot be exact: joint compliance is missing");
 }

@@ -199,7 +199,7 @@ fn element_motion(model: &Model, u: &[f64], u0: &[f64], e: usize) -> f64 {
 #[test]
 fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_water() {
     let t0 = std::time::Instant::now();
-    let scene = Scene::load(Path::new("verification/cases/wulong/wulong.toml")).unwrap();
+    let scene = cdem::harness::registry::WULONG.scene().unwrap();
     let r = run_progressive(&scene);
     let (model, sp) = (&r.model, &r.model.springs);
     println!(

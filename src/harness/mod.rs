@@ -10,6 +10,7 @@
 
 pub mod figures;
 pub mod perf;
+pub mod registry;
 pub mod report;
 pub mod reproduce;
 pub mod section;

@@ -2,28 +2,52 @@
 //! regenerated with gmsh first, `--regenerate`), run, checked and drawn:
 //! `DIR/report.md` with the validation table and the figures (PNG, plotters).
 //!
-//! 1. meshes; 2. column (analytic); 3. elastic slope, CDEM and FEM (Figs. 6-7,
-//! convergence history); 4. LEM (ACADS 1(a), paper slope); 5. eq. 21 and K_i
-//! on the slip circle (Fig. 9); 6. progressive failure of the slope (Fig. 10);
-//! 7. Wulong (Fig. 14); 8. error against run time.
+//! [`reproduce`] is the list of steps; each step, and each paper figure, is a
+//! function of its own below. The cases and their reference values come from
+//! [`crate::harness::registry`].
 
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use crate::analysis::slip::{from_springs, from_stresses, SlipCircle};
-use crate::analysis::{safety_factors, sign_segments};
+use crate::analysis::slip::{from_springs, from_stresses};
+use crate::analysis::{safety_factors, sign_segments, SafetyFactors, SurfacePoint};
 use crate::drivers::run_scene;
 use crate::drivers::{run_watched, RunResult, StageSnapshots};
 use crate::error::Error;
-use crate::harness::figures::{line_plot, section_contour, Scale, Series};
+use crate::fem::FemSolution;
+use crate::harness::figures::{line_plot, section_contour, Patch, Scale, Series};
+use crate::harness::registry::{self as reg, Case};
 use crate::harness::report::{markdown_table, Check};
 use crate::harness::section::{element_mean_displacement, front_patches, front_patches_of_cells};
-use crate::scene::Scene;
 
-/// The slip circle of verification/cases/slope-slip/slope-slip.geo.
-pub const SLIP_CIRCLE: SlipCircle = SlipCircle { xc: 24.006, zc: 63.222, toe: [20.0, 20.0] };
+/// Runs everything into `out` and writes `out/report.md`.
+pub fn reproduce(out: &Path, regenerate: bool, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
+    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
+    let mut rep = Report { out: out.to_path_buf(), checks: Vec::new(), md: String::new() };
+    let t_all = Instant::now();
+    // 1. The meshes (Fig. 5), regenerated with gmsh if asked.
+    if regenerate {
+        fig5_meshes(&mut rep, progress)?;
+    }
+    // 2. The column against the analytic solution.
+    column(&mut rep, progress)?;
+    // 3. The elastic slope, CDEM and FEM (Figs. 6-7, convergence history).
+    elastic_slope(&mut rep, progress)?;
+    // 4. Limit equilibrium: ACADS 1(a) and the paper slope.
+    let fs_lem = limit_equilibrium(&mut rep, progress)?;
+    // 5. Eq. 21 and K_i on the slip circle (Fig. 9).
+    slip_circle(&mut rep, fs_lem, progress)?;
+    // 6. Progressive failure of the slope (Fig. 10).
+    fig10_slope_failure(&mut rep, progress)?;
+    // 7. Progressive failure of Wulong (Fig. 14).
+    fig14_wulong(&mut rep, progress)?;
+    // 8. Error against run time.
+    error_against_run_time(&mut rep, progress)?;
+    rep.write(t_all.elapsed().as_secs_f64(), progress)
+}
 
+/// The report being written: the validation rows and the Markdown after the table.
 struct Report {
     out: PathBuf,
     checks: Vec<Check>,
@@ -37,12 +61,288 @@ impl Report {
     fn path(&self, file: &str) -> PathBuf {
         self.out.join(file)
     }
+    /// `out/report.md`: the head, the validation table, then the sections.
+    fn write(self, seconds: f64, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
+        let failed = self.checks.iter().filter(|c| !c.passed()).count();
+        let head = format!(
+            "# cdem reproduce\n\n{} checks, {} failed; {:.0} s in all.\n\n## Validation\n\n{}\n",
+            self.checks.len(),
+            failed,
+            seconds,
+            markdown_table(&self.checks)
+        );
+        let path = self.out.join("report.md");
+        crate::output::write_atomic(&path, format!("{head}{}", self.md).as_bytes())?;
+        progress(&format!("wrote {}", path.display()));
+        Ok(())
+    }
 }
 
-fn analytic_column_top() -> f64 {
-    // references/column.md
-    let (h, rho, g, e, nu) = (40.0, 2100.0, 9.81, 3.0e8, 0.3);
-    -rho * g * h * h / (2.0 * e * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu)))
+/// Step 1, the meshes of Fig. 5 (and every other committed mesh): regenerated
+/// from their `.geo` files with gmsh.
+fn fig5_meshes(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
+    let n = regenerate_meshes(progress)?;
+    let _ = writeln!(rep.md, "Meshes regenerated from {n} .geo files with gmsh.\n");
+    Ok(())
+}
+
+/// Step 2, the laterally confined column (no paper figure): top u_z with
+/// springs and with merged interfaces against the analytic solution.
+fn column(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
+    progress("column");
+    let top = reg::column_top_uz();
+    for (name, case, tol) in [
+        ("column, springs", reg::COLUMN, reg::TOL_COLUMN_SPRINGS),
+        ("column, merged", reg::COLUMN_MERGED, reg::TOL_COLUMN_MERGED),
+    ] {
+        let r = run_scene(&case.scene()?, &mut |_, _| {})?;
+        let uz = reg::measured_top_uz(&r);
+        rep.checks.push(Check::new(name, "top u_z (m)", uz, top, tol, reg::COLUMN_MD, r.summary.wall_s));
+    }
+    Ok(())
+}
+
+/// Step 3, the elastic slope: CDEM and FEM on the same perturbed mesh, the
+/// paper's and ANSYS values beside them; Figs. 6-7 and the convergence history.
+fn elastic_slope(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
+    progress("elastic slope (CDEM, FEM)");
+    let scene = reg::SLOPE.scene()?;
+    let r = run_scene(&scene, &mut |_, _| {})?;
+    let fem = crate::drivers::solve_fem(&scene)?;
+    let (c, f) = (&r.summary, &fem.summary);
+    let l2 = crate::analysis::compare::relative_l2_displacement(&r.model, &r.state.u, &fem.u);
+    let (cs, fs) = (c.min_szz.unwrap_or(f64::NAN), f.min_szz.unwrap_or(f64::NAN));
+    let (case, tol, src) = ("paper slope, CDEM vs FEM", reg::TOL_CDEM_VS_FEM, reg::FEM_SAME_MESH);
+    let (vs_paper, vs_ansys) = ("paper slope, CDEM vs paper", "paper slope, FEM vs ANSYS (paper)");
+    rep.checks.extend([
+        Check::new(case, "max |u_z| (m)", c.max_abs_uz, f.max_abs_uz, tol, src, c.wall_s),
+        Check::new(case, "min sigma_zz (Pa)", cs, fs, tol, src, c.wall_s),
+        Check::new(case, "relative L2 error of u", l2, 0.0, tol, src, c.wall_s),
+        reg::PAPER_MAX_ABS_UZ.check(vs_paper, "max |u_z| (m)", c.max_abs_uz, f64::NAN, c.wall_s),
+        reg::ANSYS_MAX_ABS_UZ.check(vs_ansys, "max |u_z| (m)", f.max_abs_uz, f64::NAN, f.wall_s),
+        reg::PAPER_MIN_SZZ.check(vs_paper, "min sigma_zz (Pa)", cs, f64::NAN, c.wall_s),
+        reg::ANSYS_MIN_SZZ.check(vs_ansys, "min sigma_zz (Pa)", fs, f64::NAN, f.wall_s),
+    ]);
+    let _ = writeln!(
+        rep.md,
+        "## Elastic slope (Figs. 6-7)\n\nCDEM: {} steps, {:.1} s; FEM: {:.2} s.\n",
+        c.steps, c.wall_s, f.wall_s
+    );
+    figs6_7_contours(rep, &r, &fem)?;
+    convergence_history(rep, &r)
+}
+
+/// Figs. 6 (sigma_zz) and 7 (u_z) of the elastic slope, CDEM and FEM, on the front section.
+fn figs6_7_contours(rep: &mut Report, r: &RunResult, fem: &FemSolution) -> Result<(), Error> {
+    let stress = r.stress.clone().unwrap_or_default();
+    let figs: [(&str, &str, Vec<Patch>); 4] = [
+        ("fig6-szz-cdem.png", "CDEM sigma_zz (Pa)", front_patches(&r.model, |e| stress[e][2])),
+        (
+            "fig6-szz-fem.png",
+            "FEM sigma_zz (Pa)",
+            front_patches_of_cells(&fem.coords, &fem.cells, |e| fem.stress[e][2]),
+        ),
+        (
+            "fig7-uz-cdem.png",
+            "CDEM u_z (m)",
+            front_patches(&r.model, |e| element_mean_displacement(&r.model, &r.state.u, e, 2)),
+        ),
+        (
+            "fig7-uz-fem.png",
+            "FEM u_z (m)",
+            front_patches_of_cells(&fem.coords, &fem.cells, |e| {
+                fem.cells[e].corners().iter().map(|&n| fem.u[3 * n + 2]).sum::<f64>()
+                    / fem.cells[e].corners().len() as f64
+            }),
+        ),
+    ];
+    for (file, title, patches) in &figs {
+        section_contour(&rep.path(file), title, title, patches, &[])?;
+        rep.figure(title, file);
+    }
+    Ok(())
+}
+
+/// The convergence of dynamic relaxation on the elastic slope (no paper
+/// figure): unbalanced-force ratio and kinetic energy against step.
+fn convergence_history(rep: &mut Report, r: &RunResult) -> Result<(), Error> {
+    let ratio: Vec<(f64, f64)> = r.elastic.history.iter().map(|h| (h.step as f64, h.unbalanced_ratio)).collect();
+    let ke: Vec<(f64, f64)> = r
+        .elastic
+        .history
+        .iter()
+        .map(|h| {
+            (h.step as f64, h.kinetic_energy / r.elastic.history.iter().map(|h| h.kinetic_energy).fold(0.0, f64::max))
+        })
+        .collect();
+    line_plot(
+        &rep.path("history-slope.png"),
+        "Elastic slope: convergence of dynamic relaxation",
+        "step",
+        "value",
+        &[
+            Series { name: "unbalanced-force ratio", points: &ratio },
+            Series { name: "kinetic energy / max", points: &ke },
+        ],
+        Scale::Linear,
+        Scale::Log,
+    )?;
+    rep.figure("convergence history", "history-slope.png");
+    Ok(())
+}
+
+/// Step 4, limit equilibrium (no paper figure): ACADS 1(a) against Slide and
+/// the referee, the paper slope against the paper's LEM. Returns our Bishop
+/// FS of the paper slope.
+fn limit_equilibrium(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<f64, Error> {
+    progress("limit equilibrium");
+    let acads = crate::lem::analyse(&reg::LEM_ACADS_1A.lem_input()?)?;
+    let paper = crate::lem::analyse(&reg::LEM_PAPER_SLOPE.lem_input()?)?;
+    if let (Some(b), Some(s)) = (acads.fs.bishop, acads.fs.spencer) {
+        let (case, tol, t) = ("ACADS 1(a)", reg::TOL_ACADS, acads.wall_s);
+        rep.checks.extend([
+            reg::ACADS_SLIDE_BISHOP.check(case, "Bishop FS vs Slide", b, tol, t),
+            reg::ACADS_REFEREE.check(case, "Bishop FS vs referee", b, tol, t),
+            reg::ACADS_SLIDE_SPENCER.check(case, "Spencer FS vs Slide", s, tol, t),
+            reg::ACADS_REFEREE.check(case, "Spencer FS vs referee", s, f64::NAN, t),
+        ]);
+    }
+    let fs_lem = paper.fs.bishop.unwrap_or(f64::NAN);
+    rep.checks.push(reg::PAPER_LEM_FS.check(
+        "paper slope LEM",
+        "Bishop FS (0.01 absolute)",
+        fs_lem,
+        reg::TOL_PAPER_LEM_FS_ABSOLUTE / reg::PAPER_LEM_FS.value,
+        paper.wall_s,
+    ));
+    Ok(fs_lem)
+}
+
+/// Step 5, eq. 21 and K_i on the LEM critical circle, from the CDEM springs
+/// and the FEM stresses, against our LEM (`fs_lem`) and the paper's 1.086;
+/// the K_i sign segments; Fig. 9.
+fn slip_circle(rep: &mut Report, fs_lem: f64, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
+    progress("eq. 21 on the slip circle");
+    let slip_scene = reg::SLOPE_SLIP.elastic_scene()?;
+    let rs = run_scene(&slip_scene, &mut |_, _| {})?;
+    let fem_s = crate::drivers::solve_fem(&slip_scene)?;
+    let mesh = crate::mesh::gmsh::read_msh(&slip_scene.mesh_path())?;
+    let (circle, c) = (reg::SLIP_CIRCLE, reg::SLIP_COHESION);
+    let tan_phi = reg::SLIP_FRICTION_DEG.to_radians().tan();
+    let pts_sp = from_springs(&rs.model, &rs.state.u, &rs.state.springs, "slip", &circle).unwrap_or_default();
+    let pts_fem = from_stresses(&mesh, &fem_s.coords, "slip", &circle, &fem_s.stress).unwrap_or_default();
+    let (k_sp, k_fem) = (safety_factors(&pts_sp, c, tan_phi), safety_factors(&pts_fem, c, tan_phi));
+    let (t_sp, t_fem) = (rs.summary.wall_s, fem_s.summary.wall_s);
+    rep.checks.extend([
+        Check::new(
+            "slip circle",
+            "eq. 21 K, CDEM springs vs LEM",
+            k_sp.k,
+            fs_lem,
+            reg::TOL_EQ21_VS_LEM,
+            reg::LEM_MD,
+            t_sp,
+        ),
+        Check::new("slip circle", "eq. 21 K, FEM stresses vs LEM", k_fem.k, fs_lem, f64::NAN, reg::LEM_MD, t_fem),
+        reg::PAPER_EQ21_K.check("slip circle", "eq. 21 K, CDEM springs vs paper's 1.086", k_sp.k, f64::NAN, t_sp),
+    ]);
+    let s: Vec<f64> = pts_sp.iter().map(|p| p.s).collect();
+    let seg = sign_segments(&s, &k_sp.k_i, reg::MIN_SEGMENT);
+    let _ = writeln!(rep.md, "## Slip circle (Fig. 9)\n\nK_i sign segments (CDEM springs, toe to crest, runs under 2 m merged): {}. The paper: ab -, bc +, cd -, de +.\n", seg.iter().map(|g| format!("{} {:.0}-{:.0} m", if g.sign > 0 { "+" } else { "-" }, g.s0, g.s1)).collect::<Vec<_>>().join(", "));
+    fig9(rep, &rs, (&pts_sp, &k_sp), (&pts_fem, &k_fem))
+}
+
+/// Fig. 9: the slip surface on the u_z contours of the section, and K_i
+/// along it from toe to crest (CDEM springs, FEM stresses).
+fn fig9(
+    rep: &mut Report,
+    rs: &RunResult,
+    springs: (&[SurfacePoint], &SafetyFactors),
+    fem: (&[SurfacePoint], &SafetyFactors),
+) -> Result<(), Error> {
+    let clamped = |(pts, k): (&[SurfacePoint], &SafetyFactors)| -> Vec<(f64, f64)> {
+        pts.iter().zip(&k.k_i).map(|(p, &k)| (p.s, k.clamp(-5.0, 5.0))).collect()
+    };
+    let (ki_sp, ki_fem) = (clamped(springs), clamped(fem));
+    line_plot(
+        &rep.path("fig9-ki.png"),
+        "K_i along the slip surface, toe (s = 0) to crest (clamped to +-5)",
+        "s (m)",
+        "K_i",
+        &[Series { name: "CDEM springs", points: &ki_sp }, Series { name: "FEM stresses", points: &ki_fem }],
+        Scale::Linear,
+        Scale::Linear,
+    )?;
+    let p = front_patches(&rs.model, |e| element_mean_displacement(&rs.model, &rs.state.u, e, 2));
+    let title = "Slip surface (LEM critical circle) on u_z";
+    section_contour(&rep.path("fig9-surface.png"), title, "u_z (m)", &p, &[reg::slip_arc()])?;
+    rep.figure("slip surface", "fig9-surface.png");
+    rep.figure("K_i", "fig9-ki.png");
+    Ok(())
+}
+
+/// Step 6, Fig. 10: progressive failure of the paper slope on its slip circle.
+fn fig10_slope_failure(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
+    progressive_failure(rep, "slope", reg::SLOPE_SLIP, "fig10", progress)
+}
+
+/// Step 7, Fig. 14: progressive failure of the Wulong slope.
+fn fig14_wulong(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
+    progressive_failure(rep, "Wulong", reg::WULONG, "fig14", progress)
+}
+
+/// Both phases of a scene with `[failure]` (skipped if the scene is absent or
+/// has none): a summary paragraph and the displacement since phase 1 at three
+/// stages ([`stage_figures`], files `<prefix>-*.png`).
+fn progressive_failure(
+    rep: &mut Report,
+    name: &str,
+    case: Case,
+    prefix: &str,
+    progress: &mut dyn FnMut(&str),
+) -> Result<(), Error> {
+    if !case.path().exists() {
+        return Ok(());
+    }
+    progress(&format!("progressive failure: {name}"));
+    let scene = case.scene()?;
+    if scene.failure.is_none() {
+        return Ok(());
+    }
+    let t0 = Instant::now();
+    let mut snapshots = StageSnapshots::default();
+    let pr = run_watched(&scene, &mut snapshots)?;
+    let f = pr.failure.as_ref().expect("a [failure] scene has phase 2");
+    let last = f.stages.last().copied();
+    let _ = writeln!(
+        rep.md,
+        "## Progressive failure: {name} ({prefix})\n\nPhase 1: {} steps; phase 2: {:?} after {} steps ({:.1} s); failed springs: {} tension, {} shear; displacement since phase 1 {:.3} m.\n",
+        pr.elastic.steps,
+        f.end,
+        f.report.steps,
+        t0.elapsed().as_secs_f64(),
+        last.map_or(0, |s| s.failed_tension),
+        last.map_or(0, |s| s.failed_shear),
+        last.map_or(0.0, |s| s.max_displacement)
+    );
+    for (title, file) in stage_figures(&pr, &snapshots, &rep.out, prefix)? {
+        rep.figure(&title, &file);
+    }
+    Ok(())
+}
+
+/// Step 8, error against run time (no paper figure): the study
+/// ([`crate::harness::study`]) into `out/study/`, its table and figures.
+fn error_against_run_time(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
+    progress("error against run time");
+    let study_dir = rep.out.join("study");
+    crate::harness::study::run_study(&study_dir, progress)?;
+    let table =
+        std::fs::read_to_string(study_dir.join("study.md")).map_err(|e| Error::io(study_dir.join("study.md"), e))?;
+    let _ = writeln!(rep.md, "## Error against run time\n\nRelative L2 error of the displacement field (column: analytic; slope: FEM on the 0.5 m mesh), one factor varied at a time.\n\n{table}");
+    rep.figure("column", "study/study-column.png");
+    rep.figure("slope", "study/study-slope.png");
+    Ok(())
 }
 
 /// Regenerates every committed mesh from its `.geo` with gmsh.
@@ -89,278 +389,4 @@ pub fn stage_figures(
         }
     }
     Ok(files)
-}
-
-/// Runs everything into `out` and writes `out/report.md`.
-pub fn reproduce(out: &Path, regenerate: bool, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
-    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
-    let mut rep = Report { out: out.to_path_buf(), checks: Vec::new(), md: String::new() };
-    let t_all = Instant::now();
-
-    // 1. Meshes.
-    if regenerate {
-        let n = regenerate_meshes(progress)?;
-        let _ = writeln!(rep.md, "Meshes regenerated from {n} .geo files with gmsh.\n");
-    }
-
-    // 2. Column.
-    progress("column");
-    let top = analytic_column_top();
-    for (name, file, tol) in [("column, springs", "column.toml", 0.01), ("column, merged", "column-merged.toml", 1e-5)]
-    {
-        let scene = Scene::load(&Path::new("verification/cases/column").join(file))?;
-        let r = run_scene(&scene, &mut |_, _| {})?;
-        let top_nodes: Vec<usize> =
-            (0..r.model.n_nodes()).filter(|&i| (r.model.x0[i][2] - 40.0).abs() < 1e-9).collect();
-        let uz = top_nodes.iter().map(|&i| r.state.u[3 * i + 2]).sum::<f64>() / top_nodes.len() as f64;
-        rep.checks.push(Check::new(name, "top u_z (m)", uz, top, tol, "references/column.md", r.summary.wall_s));
-    }
-
-    // 3. Elastic slope: CDEM and FEM on the same perturbed mesh.
-    progress("elastic slope (CDEM, FEM)");
-    let scene = Scene::load(Path::new("verification/cases/slope/slope.toml"))?;
-    let r = run_scene(&scene, &mut |_, _| {})?;
-    let fem = crate::drivers::solve_fem(&scene)?;
-    let (c, f) = (&r.summary, &fem.summary);
-    let l2 = crate::analysis::compare::relative_l2_displacement(&r.model, &r.state.u, &fem.u);
-    let (cs, fs) = (c.min_szz.unwrap_or(f64::NAN), f.min_szz.unwrap_or(f64::NAN));
-    rep.checks.extend([
-        Check::new("paper slope, CDEM vs FEM", "max |u_z| (m)", c.max_abs_uz, f.max_abs_uz, 0.01, "cdem fem", c.wall_s),
-        Check::new("paper slope, CDEM vs FEM", "min sigma_zz (Pa)", cs, fs, 0.01, "cdem fem", c.wall_s),
-        Check::new("paper slope, CDEM vs FEM", "relative L2 error of u", l2, 0.0, 0.01, "cdem fem", c.wall_s),
-        Check::new(
-            "paper slope, CDEM vs paper",
-            "max |u_z| (m)",
-            c.max_abs_uz,
-            4.18e-2,
-            f64::NAN,
-            "references/paper.md",
-            c.wall_s,
-        ),
-        Check::new(
-            "paper slope, FEM vs ANSYS (paper)",
-            "max |u_z| (m)",
-            f.max_abs_uz,
-            4.16e-2,
-            f64::NAN,
-            "references/paper.md",
-            f.wall_s,
-        ),
-        Check::new(
-            "paper slope, CDEM vs paper",
-            "min sigma_zz (Pa)",
-            cs,
-            -7.89e5,
-            f64::NAN,
-            "references/paper.md",
-            c.wall_s,
-        ),
-        Check::new(
-            "paper slope, FEM vs ANSYS (paper)",
-            "min sigma_zz (Pa)",
-            fs,
-            -7.81e5,
-            f64::NAN,
-            "references/paper.md",
-            f.wall_s,
-        ),
-    ]);
-    let _ = writeln!(
-        rep.md,
-        "## Elastic slope (Figs. 6-7)\n\nCDEM: {} steps, {:.1} s; FEM: {:.2} s.\n",
-        c.steps, c.wall_s, f.wall_s
-    );
-    let stress = r.stress.clone().unwrap_or_default();
-    let figs: [(&str, &str, Vec<crate::harness::figures::Patch>); 4] = [
-        ("fig6-szz-cdem.png", "CDEM sigma_zz (Pa)", front_patches(&r.model, |e| stress[e][2])),
-        (
-            "fig6-szz-fem.png",
-            "FEM sigma_zz (Pa)",
-            front_patches_of_cells(&fem.coords, &fem.cells, |e| fem.stress[e][2]),
-        ),
-        (
-            "fig7-uz-cdem.png",
-            "CDEM u_z (m)",
-            front_patches(&r.model, |e| element_mean_displacement(&r.model, &r.state.u, e, 2)),
-        ),
-        (
-            "fig7-uz-fem.png",
-            "FEM u_z (m)",
-            front_patches_of_cells(&fem.coords, &fem.cells, |e| {
-                fem.cells[e].corners().iter().map(|&n| fem.u[3 * n + 2]).sum::<f64>()
-                    / fem.cells[e].corners().len() as f64
-            }),
-        ),
-    ];
-    for (file, title, patches) in &figs {
-        section_contour(&rep.path(file), title, title, patches, &[])?;
-        rep.figure(title, file);
-    }
-    let ratio: Vec<(f64, f64)> = r.elastic.history.iter().map(|h| (h.step as f64, h.unbalanced_ratio)).collect();
-    let ke: Vec<(f64, f64)> = r
-        .elastic
-        .history
-        .iter()
-        .map(|h| {
-            (h.step as f64, h.kinetic_energy / r.elastic.history.iter().map(|h| h.kinetic_energy).fold(0.0, f64::max))
-        })
-        .collect();
-    line_plot(
-        &rep.path("history-slope.png"),
-        "Elastic slope: convergence of dynamic relaxation",
-        "step",
-        "value",
-        &[
-            Series { name: "unbalanced-force ratio", points: &ratio },
-            Series { name: "kinetic energy / max", points: &ke },
-        ],
-        Scale::Linear,
-        Scale::Log,
-    )?;
-    rep.figure("convergence history", "history-slope.png");
-
-    // 4. Limit equilibrium.
-    progress("limit equilibrium");
-    let acads = crate::lem::analyse(&crate::lem::LemInput::load(Path::new("verification/lem/acads-1a.toml"))?)?;
-    let paper = crate::lem::analyse(&crate::lem::LemInput::load(Path::new("verification/lem/paper-slope.toml"))?)?;
-    if let (Some(b), Some(s)) = (acads.fs.bishop, acads.fs.spencer) {
-        rep.checks.extend([
-            Check::new("ACADS 1(a)", "Bishop FS vs Slide", b, 0.987, 0.015, "references/lem.md", acads.wall_s),
-            Check::new("ACADS 1(a)", "Bishop FS vs referee", b, 1.0, 0.015, "references/lem.md", acads.wall_s),
-            Check::new("ACADS 1(a)", "Spencer FS vs Slide", s, 0.986, 0.015, "references/lem.md", acads.wall_s),
-            Check::new("ACADS 1(a)", "Spencer FS vs referee", s, 1.0, f64::NAN, "references/lem.md", acads.wall_s),
-        ]);
-    }
-    let fs_lem = paper.fs.bishop.unwrap_or(f64::NAN);
-    rep.checks.push(Check::new(
-        "paper slope LEM",
-        "Bishop FS (0.01 absolute)",
-        fs_lem,
-        1.084,
-        0.01 / 1.084,
-        "references/paper.md",
-        paper.wall_s,
-    ));
-
-    // 5. Eq. 21 and K_i on the slip circle (Fig. 9).
-    progress("eq. 21 on the slip circle");
-    let mut slip_scene = Scene::load(Path::new("verification/cases/slope-slip/slope-slip.toml"))?;
-    slip_scene.failure = None; // the elastic state: phase 1 only
-    let rs = run_scene(&slip_scene, &mut |_, _| {})?;
-    let fem_s = crate::drivers::solve_fem(&slip_scene)?;
-    let mesh = crate::mesh::gmsh::read_msh(&slip_scene.mesh_path())?;
-    let tan_phi = 18f64.to_radians().tan();
-    let pts_sp = from_springs(&rs.model, &rs.state.u, &rs.state.springs, "slip", &SLIP_CIRCLE).unwrap_or_default();
-    let pts_fem = from_stresses(&mesh, &fem_s.coords, "slip", &SLIP_CIRCLE, &fem_s.stress).unwrap_or_default();
-    let (k_sp, k_fem) = (safety_factors(&pts_sp, 16e3, tan_phi), safety_factors(&pts_fem, 16e3, tan_phi));
-    rep.checks.extend([
-        Check::new(
-            "slip circle",
-            "eq. 21 K, CDEM springs vs LEM",
-            k_sp.k,
-            fs_lem,
-            0.02,
-            "references/lem.md",
-            rs.summary.wall_s,
-        ),
-        Check::new(
-            "slip circle",
-            "eq. 21 K, FEM stresses vs LEM",
-            k_fem.k,
-            fs_lem,
-            f64::NAN,
-            "references/lem.md",
-            fem_s.summary.wall_s,
-        ),
-        Check::new(
-            "slip circle",
-            "eq. 21 K, CDEM springs vs paper's 1.086",
-            k_sp.k,
-            1.086,
-            f64::NAN,
-            "references/paper.md",
-            rs.summary.wall_s,
-        ),
-    ]);
-    let s: Vec<f64> = pts_sp.iter().map(|p| p.s).collect();
-    let seg = sign_segments(&s, &k_sp.k_i, 2.0);
-    let _ = writeln!(rep.md, "## Slip circle (Fig. 9)\n\nK_i sign segments (CDEM springs, toe to crest, runs under 2 m merged): {}. The paper: ab -, bc +, cd -, de +.\n", seg.iter().map(|g| format!("{} {:.0}-{:.0} m", if g.sign > 0 { "+" } else { "-" }, g.s0, g.s1)).collect::<Vec<_>>().join(", "));
-    let ki_sp: Vec<(f64, f64)> = pts_sp.iter().zip(&k_sp.k_i).map(|(p, &k)| (p.s, k.clamp(-5.0, 5.0))).collect();
-    let ki_fem: Vec<(f64, f64)> = pts_fem.iter().zip(&k_fem.k_i).map(|(p, &k)| (p.s, k.clamp(-5.0, 5.0))).collect();
-    line_plot(
-        &rep.path("fig9-ki.png"),
-        "K_i along the slip surface, toe (s = 0) to crest (clamped to +-5)",
-        "s (m)",
-        "K_i",
-        &[Series { name: "CDEM springs", points: &ki_sp }, Series { name: "FEM stresses", points: &ki_fem }],
-        Scale::Linear,
-        Scale::Linear,
-    )?;
-    let r_c = ((SLIP_CIRCLE.toe[0] - SLIP_CIRCLE.xc).powi(2) + (SLIP_CIRCLE.toe[1] - SLIP_CIRCLE.zc).powi(2)).sqrt();
-    let a0 = (SLIP_CIRCLE.toe[1] - SLIP_CIRCLE.zc).atan2(SLIP_CIRCLE.toe[0] - SLIP_CIRCLE.xc);
-    let a1 = (40.0 - SLIP_CIRCLE.zc).atan2((r_c * r_c - (40.0 - SLIP_CIRCLE.zc).powi(2)).sqrt());
-    let arc: Vec<(f64, f64)> = (0..=100)
-        .map(|k| a0 + (a1 - a0) * k as f64 / 100.0)
-        .map(|a| (SLIP_CIRCLE.xc + r_c * a.cos(), SLIP_CIRCLE.zc + r_c * a.sin()))
-        .collect();
-    let p = front_patches(&rs.model, |e| element_mean_displacement(&rs.model, &rs.state.u, e, 2));
-    section_contour(&rep.path("fig9-surface.png"), "Slip surface (LEM critical circle) on u_z", "u_z (m)", &p, &[arc])?;
-    rep.figure("slip surface", "fig9-surface.png");
-    rep.figure("K_i", "fig9-ki.png");
-
-    // 6-7. Progressive failure: the slope (Fig. 10) and Wulong (Fig. 14).
-    for (name, path, prefix) in [
-        ("slope", "verification/cases/slope-slip/slope-slip.toml", "fig10"),
-        ("Wulong", "verification/cases/wulong/wulong.toml", "fig14"),
-    ] {
-        if !Path::new(path).exists() {
-            continue;
-        }
-        progress(&format!("progressive failure: {name}"));
-        let scene = Scene::load(Path::new(path))?;
-        if scene.failure.is_none() {
-            continue;
-        }
-        let t0 = Instant::now();
-        let mut snapshots = StageSnapshots::default();
-        let pr = run_watched(&scene, &mut snapshots)?;
-        let f = pr.failure.as_ref().expect("a [failure] scene has phase 2");
-        let last = f.stages.last().copied();
-        let _ = writeln!(
-            rep.md,
-            "## Progressive failure: {name} ({prefix})\n\nPhase 1: {} steps; phase 2: {:?} after {} steps ({:.1} s); failed springs: {} tension, {} shear; displacement since phase 1 {:.3} m.\n",
-            pr.elastic.steps,
-            f.end,
-            f.report.steps,
-            t0.elapsed().as_secs_f64(),
-            last.map_or(0, |s| s.failed_tension),
-            last.map_or(0, |s| s.failed_shear),
-            last.map_or(0.0, |s| s.max_displacement)
-        );
-        for (title, file) in stage_figures(&pr, &snapshots, out, prefix)? {
-            rep.figure(&title, &file);
-        }
-    }
-
-    // 8. Error against run time.
-    progress("error against run time");
-    let study_dir = out.join("study");
-    crate::harness::study::run_study(&study_dir, progress)?;
-    let table =
-        std::fs::read_to_string(study_dir.join("study.md")).map_err(|e| Error::io(study_dir.join("study.md"), e))?;
-    let _ = writeln!(rep.md, "## Error against run time\n\nRelative L2 error of the displacement field (column: analytic; slope: FEM on the 0.5 m mesh), one factor varied at a time.\n\n{table}");
-    rep.figure("column", "study/study-column.png");
-    rep.figure("slope", "study/study-slope.png");
-
-    let failed = rep.checks.iter().filter(|c| !c.passed()).count();
-    let head = format!(
-        "# cdem reproduce\n\n{} checks, {} failed; {:.0} s in all.\n\n## Validation\n\n{}\n",
-        rep.checks.len(),
-        failed,
-        t_all.elapsed().as_secs_f64(),
-        markdown_table(&rep.checks)
-    );
-    crate::output::write_atomic(&out.join("report.md"), format!("{head}{}", rep.md).as_bytes())?;
-    progress(&format!("wrote {}", out.join("report.md").display()));
-    Ok(())
 }

@@ -5,7 +5,8 @@
 //!
 //! Error measure: the relative L2 error of the displacement field,
 //! mass-weighted over nodes (see [`crate::analysis::compare`]):
-//! - column: against the analytic `u_z(z)` (references/column.md) at each node;
+//! - column: against the analytic `u_z(z)` ([`registry::column_uz`],
+//!   references/column.md) at each node;
 //! - slope: against the FEM on the finest mesh (`slope-h05`, 0.5 m), sampled
 //!   at the coincident nodes (the transfinite meshes are nested). The study
 //!   meshes are not perturbed, so that they nest.
@@ -21,6 +22,7 @@ use crate::drivers::solve_fem as solve_scene;
 use crate::error::Error;
 use crate::fem::FemSolution;
 use crate::harness::figures::{line_plot, Scale, Series};
+use crate::harness::registry;
 use crate::scene::Scene;
 
 /// One point of the study.
@@ -43,14 +45,11 @@ trait Reference {
     fn at(&self, x: [f64; 3]) -> [f64; 3];
 }
 
+/// The analytic confined column (references/column.md).
 struct Column;
 impl Reference for Column {
     fn at(&self, x: [f64; 3]) -> [f64; 3] {
-        // references/column.md
-        let (h, rho, g, e, nu) = (40.0, 2100.0, 9.81, 3.0e8, 0.3);
-        let m = e * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
-        let z = x[2];
-        [0.0, 0.0, -rho * g * (h * z - 0.5 * z * z) / m]
+        [0.0, 0.0, registry::column_uz(x[2])]
     }
 }
 
@@ -139,18 +138,27 @@ fn with_mesh(base: &Scene, mesh: &str) -> Scene {
     s
 }
 
-/// The study of one case: `meshes` coarse to fine (paths relative to the base
-/// scene's directory), `base` index of the base mesh.
+/// The factors varied around the base point of one case.
+struct Factors<'a> {
+    /// Meshes coarse to fine (paths relative to the base scene's directory).
+    meshes: &'a [&'a str],
+    /// Index of the base mesh in `meshes`.
+    base: usize,
+    /// Joint normal moduli E_j (Pa).
+    moduli: [f64; 3],
+    /// Convergence tolerances.
+    tolerances: [f64; 3],
+}
+
+/// The study of one case.
 fn study_case(
     case: &str,
     base_scene: &Scene,
-    meshes: &[&str],
-    base: usize,
-    moduli: [f64; 3],
-    tolerances: [f64; 3],
+    factors: &Factors,
     reference: &dyn Reference,
     progress: &mut dyn FnMut(&str),
 ) -> Result<Vec<StudyRow>, Error> {
+    let Factors { meshes, base, moduli, tolerances } = *factors;
     let mut rows = Vec::new();
     let base_scene = with_mesh(base_scene, meshes[base]);
     for (k, mesh) in meshes.iter().enumerate() {
@@ -184,7 +192,7 @@ fn study_case(
 /// One small point of the column study (10 layers, E_j = 1e11, tolerance
 /// 1e-7): (CDEM error, FEM error) against the analytic solution.
 pub fn column_base_point() -> Result<(f64, f64), Error> {
-    let scene = Scene::load(Path::new("verification/cases/column/column.toml"))?;
+    let scene = registry::COLUMN.scene()?;
     let c = cdem_point("column", "base", &with_mesh(&scene, "column.msh"), &Column)?;
     let f = fem_point("column", &with_mesh(&scene, "column.msh"), &Column)?.0;
     Ok((c.error, f.error))
@@ -194,31 +202,25 @@ pub fn column_base_point() -> Result<(f64, f64), Error> {
 /// `out/study-slope.png`.
 pub fn run_study(out: &Path, progress: &mut dyn FnMut(&str)) -> Result<Vec<StudyRow>, Error> {
     std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
-    let column = Scene::load(Path::new("verification/cases/column/column.toml"))?;
-    let mut rows = study_case(
-        "column",
-        &column,
-        &["column.msh", "../../study/column-l20.msh", "../../study/column-l40.msh"],
-        0,
-        [1e10, 1e11, 1e12],
-        [1e-3, 1e-5, 1e-7],
-        &Column,
-        progress,
-    )?;
-    let slope = Scene::load(Path::new("verification/cases/slope/slope.toml"))?;
+    let column = registry::COLUMN.scene()?;
+    let column_factors = Factors {
+        meshes: &["column.msh", "../../study/column-l20.msh", "../../study/column-l40.msh"],
+        base: 0,
+        moduli: [1e10, 1e11, 1e12],
+        tolerances: [1e-3, 1e-5, 1e-7],
+    };
+    let mut rows = study_case("column", &column, &column_factors, &Column, progress)?;
+    let slope = registry::SLOPE.scene()?;
     progress("slope: reference FEM on slope-h05 (0.5 m)");
     let (_, finest) = fem_point("slope", &with_mesh(&slope, "../../study/slope-h05.msh"), &Column)?;
     let reference = Nodal::new(&finest);
-    rows.extend(study_case(
-        "slope",
-        &slope,
-        &["../../study/slope-h4.msh", "slope.msh", "../../study/slope-h1.msh"],
-        1,
-        [1e10, 1e11, 1e12],
-        [1e-3, 1e-4, 1e-5],
-        &reference,
-        progress,
-    )?);
+    let slope_factors = Factors {
+        meshes: &["../../study/slope-h4.msh", "slope.msh", "../../study/slope-h1.msh"],
+        base: 1,
+        moduli: [1e10, 1e11, 1e12],
+        tolerances: [1e-3, 1e-4, 1e-5],
+    };
+    rows.extend(study_case("slope", &slope, &slope_factors, &reference, progress)?);
     let mut w = csv::Writer::from_writer(Vec::new());
     for r in &rows {
         w.serialize(r).map_err(|e| Error::io(out, std::io::Error::other(e)))?;

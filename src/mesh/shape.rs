@@ -203,10 +203,10 @@ pub fn check_cell(kind: CellKind, corners: &[[f64; 3]]) -> Result<f64, CellDefec
 
 impl CellDefect {
     /// The mesh error naming the element by its gmsh tag.
-    pub fn into_mesh_error(self, element: u64) -> crate::MeshError {
+    pub fn into_mesh_error(self, element: u64) -> crate::error::MeshError {
         match self {
-            CellDefect::Inverted { tet, volume } => crate::MeshError::Inverted { element, tet, volume },
-            CellDefect::Degenerate { tet, volume } => crate::MeshError::Degenerate { element, tet, volume },
+            CellDefect::Inverted { tet, volume } => crate::error::MeshError::Inverted { element, tet, volume },
+            CellDefect::Degenerate { tet, volume } => crate::error::MeshError::Degenerate { element, tet, volume },
         }
     }
 }
