@@ -20,7 +20,7 @@ pub fn meshes() -> Vec<(PathBuf, usize)> {
 
 /// The paper slope's scene with another mesh.
 pub fn slope_scene(mesh: &Path) -> Scene {
-    let mut scene = Scene::load(&root().join("verification/cases/slope/slope.toml")).expect("slope scene loads");
+    let mut scene = Scene::load(&root().join(cdem::harness::registry::SLOPE.input)).expect("slope scene loads");
     scene.mesh.file = mesh.into();
     scene
 }

@@ -18,8 +18,10 @@
 //! - the paper slope's slip circle ([`SLIP_CIRCLE`]) and its strength;
 //! - the tolerances that a test and `cdem reproduce` both apply.
 //!
-//! Not here yet: the inputs of the performance figures ([`crate::harness::perf`]:
-//! `paper_slope`, `SLOPE_MESHES`, `LEM_CASES`), which that module still lists itself.
+//! - the committed meshes of the paper slope by refinement ([`SLOPE_MESHES`]),
+//!   which the performance figures ([`crate::harness::perf`]) and the benches
+//!   use; perf's LEM cases and paper slope are [`LEM_PAPER_SLOPE_EXPLICIT`],
+//!   [`LEM_ACADS_1A`] and [`SLOPE`].
 
 use std::path::Path;
 
@@ -69,6 +71,16 @@ pub struct Case {
     /// The file under references/ with its reference values.
     pub source: &'static str,
 }
+
+/// The committed meshes of the paper slope, coarse to fine: `refine` of
+/// slope.geo (1000 refine^2 hexahedra) and the path from the repository root
+/// (the refine-1 mesh is [`SLOPE`]'s).
+pub const SLOPE_MESHES: [(f64, &str); 4] = [
+    (0.5, "verification/study/slope-h4.msh"),
+    (1.0, "verification/cases/slope/slope.msh"),
+    (2.0, "verification/study/slope-h1.msh"),
+    (4.0, "verification/study/slope-h05.msh"),
+];
 
 impl Case {
     /// The input file.

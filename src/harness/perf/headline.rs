@@ -45,7 +45,7 @@ impl Headline {
 
 /// The paper slope's scene and model (paths relative to the repository root).
 pub fn paper_slope(root: &Path) -> Result<(Scene, Model), Error> {
-    let scene = Scene::load(&root.join("verification/cases/slope/slope.toml"))?;
+    let scene = Scene::load(&root.join(crate::harness::registry::SLOPE.input))?;
     let model = crate::drivers::build_model(&scene)?;
     Ok((scene, model))
 }

@@ -8,10 +8,11 @@ use std::path::Path;
 use std::time::Instant;
 
 use crate::error::Error;
+use crate::harness::registry;
 
 /// LEM cases timed against pySlope: (name in references/pyslope.json, input).
 pub const LEM_CASES: [(&str, &str); 2] =
-    [("paper_slope", "verification/lem/paper-slope-explicit.toml"), ("acads_1a", "verification/lem/acads-1a.toml")];
+    [("paper_slope", registry::LEM_PAPER_SLOPE_EXPLICIT.input), ("acads_1a", registry::LEM_ACADS_1A.input)];
 
 /// `base` with the search pySlope's timing repeats (scripts/pyslope_check.py):
 /// Bishop on the default 20 x 20 x 10 grid only, no entry-exit search, no

@@ -16,14 +16,7 @@ use crate::error::Error;
 use crate::scene::Scene;
 use crate::solver::SolverParams;
 
-/// The committed meshes of the paper slope, coarse to fine: `refine` of
-/// slope.geo (1000 refine^2 hexahedra) and the path from the repository root.
-pub const SLOPE_MESHES: [(f64, &str); 4] = [
-    (0.5, "verification/study/slope-h4.msh"),
-    (1.0, "verification/cases/slope/slope.msh"),
-    (2.0, "verification/study/slope-h1.msh"),
-    (4.0, "verification/study/slope-h05.msh"),
-];
+pub use crate::harness::registry::SLOPE_MESHES;
 
 /// The paper slope's `.geo` at `refine`, meshed with gmsh into `dir`
 /// (`slope-r<refine>.msh`); the existing file is reused.
@@ -60,7 +53,11 @@ pub fn scaling_meshes(
             Some(p) => p,
             None if r.fract() == 0.0 && r >= 1.0 => {
                 progress(&format!("gmsh: slope at refine {r}"));
-                slope_mesh(&root.join("verification/cases/slope/slope.geo"), r as u32, dir)?
+                slope_mesh(
+                    &root.join(Path::new(crate::harness::registry::SLOPE.input).with_extension("geo")),
+                    r as u32,
+                    dir,
+                )?
             }
             None => {
                 return Err(Error::Gmsh(format!(
