@@ -16,8 +16,7 @@
 //!   ([`layered_top_uz`]), the block on a plane ([`sliding_block_acceleration`]);
 //! - the published values ([`PAPER_MAX_ABS_UZ`], [`ACADS_SLIDE_BISHOP`], ...);
 //! - the paper slope's slip circle ([`SLIP_CIRCLE`]) and its strength;
-//! - the tolerances that a test and `cdem reproduce` both apply.
-//!
+//! - the tolerances that a test and `cdem reproduce` both apply;
 //! - the committed meshes of the paper slope by refinement ([`SLOPE_MESHES`]),
 //!   which the performance figures ([`crate::harness::perf`]) and the benches
 //!   use; perf's LEM cases and paper slope are [`LEM_PAPER_SLOPE_EXPLICIT`],
