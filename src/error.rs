@@ -75,14 +75,26 @@ impl SceneError {
 /// Errors building the model from a mesh and a scene.
 #[derive(Debug, thiserror::Error)]
 pub enum ModelError {
-    #[error("element {element}: no material (its volume group is not given a [[material]])")]
-    NoMaterial { element: u64 },
+    #[error("element {element}: no material (its volume group{groups} is not given a [[material]])")]
+    NoMaterial { element: u64, groups: String },
     #[error("node {node}: non-positive lumped mass {mass:.3e} kg")]
     NonPositiveMass { node: usize, mass: f64 },
     #[error("perturbation inverts element {element} (sub-tetrahedron {tet}, volume {volume:.3e} m^3); lower perturbation.ratio")]
     PerturbationInverts { element: u64, tet: usize, volume: f64 },
-    #[error("scene key `{key}`: group {group:?} is not a {what} group of the mesh")]
-    UnknownGroup { key: String, group: String, what: String },
+    #[error("scene key `{key}`: group {group:?} is not a {what} group of the mesh (its {what} groups: {available})")]
+    UnknownGroup { key: String, group: String, what: String, available: String },
+    #[error("scene key `{key}`: group {group:?} has {outer} of its {facets} facets on the outer surface, not between two elements: an [[interface]] must be an internal surface")]
+    NotAnInterface { key: String, group: String, outer: usize, facets: usize },
+    #[error("part {part} of the model ({elements} elements, the first gmsh element {first_element}) is free to move: the [[boundary]] fixities leave the rigid motion {motion} unresisted; fix more components on a boundary group of that part")]
+    FreeRigidMotion { part: usize, elements: usize, first_element: u64, motion: String },
+}
+
+impl Error {
+    /// Whether the error is in the input (scene, mesh, or what the model
+    /// makes of them) rather than in the run: the CLI's exit code 2.
+    pub fn is_input(&self) -> bool {
+        matches!(self, Error::Mesh(_) | Error::MeshFile { .. } | Error::Scene(_) | Error::Model(_))
+    }
 }
 
 /// Errors of the time integration.

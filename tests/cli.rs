@@ -137,9 +137,105 @@ fn a_bad_scene_exits_non_zero_naming_the_key_and_writes_nothing() {
         .args(["run", scene.to_str().unwrap(), "--out", out.to_str().unwrap()])
         .output()
         .unwrap();
-    assert!(!o.status.success());
+    assert_eq!(o.status.code(), Some(2), "invalid input");
     let msg = String::from_utf8_lossy(&o.stderr);
     assert!(msg.contains("material[0].poisson_ratio"), "{msg}");
     assert!(!out.exists(), "no output directory for a failed run");
+    let _ = std::fs::remove_file(&scene);
+}
+
+/// The column scene with `edit` applied, written beside a temporary output
+/// directory (the mesh path made absolute); returns (scene, out).
+fn edited_column(name: &str, edit: impl Fn(String) -> String) -> (PathBuf, PathBuf) {
+    let scene = temp_dir(&format!("{name}-scene")).with_extension("toml");
+    let text = std::fs::read_to_string("verification/cases/column/column-merged.toml").unwrap().replace(
+        "file = \"column.msh\"",
+        &format!("file = {:?}", std::fs::canonicalize("verification/cases/column/column.msh").unwrap()),
+    );
+    std::fs::write(&scene, edit(text)).unwrap();
+    (scene, temp_dir(name))
+}
+
+fn cdem_run(scene: &std::path::Path, out: &std::path::Path) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_cdem"))
+        .args(["run", scene.to_str().unwrap(), "--out", out.to_str().unwrap()])
+        .output()
+        .unwrap()
+}
+
+/// Exit code 2 (invalid input) before the first step when the supports leave
+/// a rigid motion free: here no `[[boundary]]` at all, so the whole column
+/// translates; the message names the part and the motion.
+#[test]
+fn a_scene_without_supports_is_refused_before_the_first_step() {
+    let (scene, out) = edited_column("free", |t| {
+        let i = t.find("[[boundary]]").unwrap();
+        let j = t.find("[loads]").unwrap();
+        format!("{}{}", &t[..i], &t[j..])
+    });
+    let o = cdem_run(&scene, &out);
+    let msg = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{msg}");
+    assert!(msg.contains("part 0 of the model (40 elements") && msg.contains("is free to move"), "{msg}");
+    assert!(msg.contains("translation"), "{msg}");
+    assert!(!out.exists());
+
+    // Only the bottom fixed in z: the column can still slide in x and y and spin about z.
+    let (scene, out) = edited_column("slide", |t| {
+        let i = t.find("[[boundary]]").unwrap();
+        let j = t.find("[loads]").unwrap();
+        format!("{}[[boundary]]\ngroup = \"bottom\"\nfix = [\"z\"]\n{}", &t[..i], &t[j..])
+    });
+    let o = cdem_run(&scene, &out);
+    assert_eq!(o.status.code(), Some(2), "{}", String::from_utf8_lossy(&o.stderr));
+    let _ = std::fs::remove_file(&scene);
+}
+
+/// Exit code 3 when the step budget runs out: the outputs are still written,
+/// and say so.
+#[test]
+fn a_run_out_of_steps_exits_3_with_its_outputs_marked_undecided() {
+    let (scene, out) = edited_column("budget", |t| t.replace("tolerance = 1e-7", "tolerance = 1e-7\nmax_steps = 50"));
+    let o = cdem_run(&scene, &out);
+    assert_eq!(o.status.code(), Some(3), "{}", String::from_utf8_lossy(&o.stderr));
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(
+        (s["end_state"].as_str(), s["converged"].as_bool(), s["steps"].as_u64()),
+        (Some("Undecided"), Some(false), Some(50))
+    );
+    let _ = std::fs::remove_dir_all(&out);
+    let _ = std::fs::remove_file(&scene);
+}
+
+/// An `[[interface]]` must be an internal surface: naming an outer one (the
+/// column's base) is refused, naming the item and counting the outer facets.
+#[test]
+fn an_interface_on_the_outer_surface_is_refused() {
+    let (scene, out) = edited_column("outer", |t| {
+        t.replace(
+            "[[boundary]]\ngroup = \"bottom\"",
+            "[[interface]]\ngroup = \"bottom\"\nmode = \"merged\"\n\n[[boundary]]\ngroup = \"bottom\"",
+        )
+    });
+    let o = cdem_run(&scene, &out);
+    let msg = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{msg}");
+    assert!(
+        msg.contains("interface[0].group") && msg.contains("\"bottom\" has 4 of its 4 facets on the outer surface"),
+        "{msg}"
+    );
+    let _ = std::fs::remove_file(&scene);
+}
+
+/// An unknown group is answered with the groups of that kind the mesh has.
+#[test]
+fn an_unknown_group_lists_the_groups_there_are() {
+    let (scene, out) = edited_column("unknown", |t| t.replacen("group = \"xmin\"", "group = \"x_min\"", 1));
+    let o = cdem_run(&scene, &out);
+    let msg = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{msg}");
+    assert!(msg.contains("boundary[1].group") && msg.contains("\"x_min\""), "{msg}");
+    assert!(msg.contains("its surface groups:") && msg.contains("\"xmin\"") && msg.contains("\"bottom\""), "{msg}");
     let _ = std::fs::remove_file(&scene);
 }

@@ -10,7 +10,12 @@ use indicatif::{ProgressBar, ProgressStyle};
 use cdem::scene::Scene;
 
 #[derive(Parser)]
-#[command(name = "cdem", version, about = "Continuum-discontinuum element method for jointed rock slopes")]
+#[command(
+    name = "cdem",
+    version,
+    about = "Continuum-discontinuum element method for jointed rock slopes",
+    after_help = EXIT_CODES
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -80,41 +85,56 @@ fn progress_bar(max: usize) -> ProgressBar {
     pb
 }
 
+const EXIT_CODES: &str = "Exit codes:
+  0  the run reached what it was asked for (equilibrium; with [failure], a phase-2 end state)
+  1  the run failed (non-finite state, instability, a file that cannot be written)
+  2  invalid input: the scene, the mesh, or what the model makes of them (the message names the place)
+  3  the step budget ran out: outputs are written, summary.json says end_state \"Undecided\"";
+
+/// How a command ended, for the exit code.
+enum Outcome {
+    Reached,
+    OutOfSteps,
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    let reached = |r: cdem::Result<()>| r.map(|()| Outcome::Reached);
     let result = match cli.command {
         Command::Run { scene, out } => run(&scene, &out),
+        Command::Fem { scene, out } => fem(&scene, &out),
         Command::Mesh { geo, out } => {
             let out = out.unwrap_or_else(|| geo.with_extension("msh"));
-            cdem::mesh::gmsh::regenerate(&geo, &out).map(|_| eprintln!("wrote {}", out.display()))
+            reached(cdem::mesh::gmsh::regenerate(&geo, &out).map(|_| eprintln!("wrote {}", out.display())))
         }
-        Command::Fem { scene, out } => fem(&scene, &out),
-        Command::Lem { input, out } => lem(&input, out.as_deref()),
-        Command::Study { out } => {
-            cdem::harness::study::run_study(&out, &mut |what| eprintln!("study: {what}")).map(|rows| {
-                eprintln!("study: {} points -> {}", rows.len(), out.join("study.csv").display());
-            })
-        }
+        Command::Lem { input, out } => reached(lem(&input, out.as_deref())),
+        Command::Study { out } => reached(
+            cdem::harness::study::run_study(&out, &mut |what| eprintln!("study: {what}"))
+                .map(|rows| eprintln!("study: {} points -> {}", rows.len(), out.join("study.csv").display())),
+        ),
         Command::Perf { out, refine, no_damping } => {
             let opts = cdem::harness::perf::PerfOptions { damping: !no_damping, refine, ..Default::default() };
-            cdem::harness::perf::run_perf(Path::new("."), &out, &opts, &mut |what| eprintln!("perf: {what}"))
-                .map(|md| println!("{md}"))
+            reached(
+                cdem::harness::perf::run_perf(Path::new("."), &out, &opts, &mut |what| eprintln!("perf: {what}"))
+                    .map(|md| println!("{md}")),
+            )
         }
         Command::Reproduce { out, regenerate } => {
-            cdem::harness::reproduce::reproduce(&out, regenerate, &mut |what| eprintln!("reproduce: {what}"))
+            reached(cdem::harness::reproduce::reproduce(&out, regenerate, &mut |what| eprintln!("reproduce: {what}")))
         }
     };
     match result {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(Outcome::Reached) => ExitCode::SUCCESS,
+        Ok(Outcome::OutOfSteps) => ExitCode::from(3),
         Err(e) => {
             eprintln!("error: {e}");
-            ExitCode::FAILURE
+            ExitCode::from(if e.is_input() { 2 } else { 1 })
         }
     }
 }
 
 /// `cdem run`: phase 1 and, for a scene with `[failure]`, phase 2.
-fn run(scene_path: &Path, out: &Path) -> cdem::Result<()> {
+fn run(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
     let scene = Scene::load(scene_path)?;
     let budget = scene.solver.max_steps + scene.failure.as_ref().map_or(0, |f| f.max_steps);
     let pb = progress_bar(budget);
@@ -153,11 +173,11 @@ fn run(scene_path: &Path, out: &Path) -> cdem::Result<()> {
             out.display()
         ),
     }
-    Ok(())
+    Ok(if s.end_state == cdem::EndState::Undecided { Outcome::OutOfSteps } else { Outcome::Reached })
 }
 
 /// `cdem fem`: the implicit FEM reference on the continuous mesh.
-fn fem(scene_path: &Path, out: &Path) -> cdem::Result<()> {
+fn fem(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
     let scene = Scene::load(scene_path)?;
     let sol = cdem::drivers::solve_fem(&scene)?;
     cdem::output::write_fem(&sol, out)?;
@@ -171,7 +191,7 @@ fn fem(scene_path: &Path, out: &Path) -> cdem::Result<()> {
         s.min_szz.map_or("-".into(), |v| format!("{v:.4e}")),
         out.display()
     );
-    Ok(())
+    Ok(if s.converged { Outcome::Reached } else { Outcome::OutOfSteps })
 }
 
 /// `cdem lem`: runs a LEM input, prints a short table and writes the JSON

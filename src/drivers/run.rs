@@ -7,7 +7,7 @@ use std::ops::ControlFlow;
 use std::time::Instant;
 
 use super::failure::{self, FailureResult, Stage};
-use crate::error::Error;
+use crate::error::{Error, ModelError};
 use crate::mesh::gmsh::read_msh;
 use crate::mesh::Mesh;
 use crate::model::{self, Model};
@@ -88,6 +88,22 @@ pub fn build_model(scene: &Scene) -> Result<Model, Error> {
     model::build(&read_mesh(scene)?, &scene.model_spec())
 }
 
+/// Before the first step: every connected part of the model must be held
+/// against all six rigid motions by its fixities (the FEM makes the same
+/// check on the continuous mesh).
+pub fn check_supports(model: &Model) -> Result<(), Error> {
+    match crate::model::supports::unsupported_part(model) {
+        None => Ok(()),
+        Some(p) => Err(ModelError::FreeRigidMotion {
+            part: p.part,
+            elements: p.elements,
+            first_element: p.first_element,
+            motion: p.motion,
+        }
+        .into()),
+    }
+}
+
 /// Runs a scene (both phases if it has `[failure]`), reporting
 /// `(step, unbalanced ratio)` every 100 steps.
 pub fn run_scene(scene: &Scene, progress: &mut dyn FnMut(usize, f64)) -> Result<RunResult, Error> {
@@ -98,6 +114,7 @@ pub fn run_scene(scene: &Scene, progress: &mut dyn FnMut(usize, f64)) -> Result<
 pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Error> {
     let t0 = Instant::now();
     let model = build_model(scene)?;
+    check_supports(&model)?;
     let mut solver = Solver::new(&model, scene.solver.clone())?;
     let mut state = State::new(&model);
 

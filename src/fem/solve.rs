@@ -22,10 +22,10 @@
 
 use std::time::Instant;
 
+use crate::model::supports::free_rigid_motion;
 use faer::linalg::solvers::Solve;
 use faer::sparse::{SparseColMat, Triplet};
 use faer::{Mat, Side};
-use nalgebra::{Matrix6, SymmetricEigen};
 
 use super::element::{element_matrices, BadJacobian, ElementMatrices};
 use super::problem::FemProblem;
@@ -178,61 +178,12 @@ pub fn solve_linear(p: &FemProblem) -> Result<Solved, Error> {
     })
 }
 
-/// Rejects a problem whose fixed components leave a rigid-body motion free.
-/// The six motions (translations, rotations about the centroid scaled by the
-/// model size `L`) evaluated at the fixed components form the rows of `R`;
-/// a null vector of the Gram matrix `R^T R` (eigenvalue below `1e-12` of the
-/// largest) is a motion no fixity resists.
+/// Rejects a problem whose fixed components leave a rigid-body motion free
+/// ([`free_rigid_motion`], the check `cdem run` makes too).
 fn check_rigid_motions(p: &FemProblem, used: &[bool]) -> Result<(), SolveError> {
     let nodes: Vec<usize> = (0..p.n_nodes()).filter(|&n| used[n]).collect();
-    let mut c = [0.0; 3];
-    for &n in &nodes {
-        for d in 0..3 {
-            c[d] += p.coords[n][d] / nodes.len() as f64;
-        }
+    match free_rigid_motion(&p.coords, &p.fixed, &nodes) {
+        None => Ok(()),
+        Some(motion) => Err(SolveError::UnderConstrained { motion }),
     }
-    let l = nodes
-        .iter()
-        .map(|&n| (0..3).map(|d| (p.coords[n][d] - c[d]).abs()).fold(0.0, f64::max))
-        .fold(0.0, f64::max)
-        .max(f64::MIN_POSITIVE);
-    let mut gram = Matrix6::<f64>::zeros();
-    for &n in &nodes {
-        let r = [0, 1, 2].map(|d| (p.coords[n][d] - c[d]) / l);
-        for i in 0..3 {
-            if !p.fixed[3 * n + i] {
-                continue;
-            }
-            // Component i of the six motions at node n: e_k (translations), e_k x r (rotations).
-            let mut v = [0.0; 6];
-            v[i] = 1.0;
-            let (j, k) = ((i + 1) % 3, (i + 2) % 3);
-            v[3 + j] = r[k]; // (e_j x r)_i = r_k for cyclic (i, j, k)
-            v[3 + k] = -r[j];
-            for a in 0..6 {
-                for bb in 0..6 {
-                    gram[(a, bb)] += v[a] * v[bb];
-                }
-            }
-        }
-    }
-    let eig = SymmetricEigen::new(gram);
-    let (imin, lmin) =
-        eig.eigenvalues
-            .iter()
-            .enumerate()
-            .fold((0, f64::INFINITY), |acc, (i, &v)| if v < acc.1 { (i, v) } else { acc });
-    let lmax = eig.eigenvalues.iter().fold(0.0f64, |a, &v| a.max(v));
-    if lmax > 0.0 && lmin > 1e-12 * lmax {
-        return Ok(());
-    }
-    let v = eig.eigenvectors.column(imin);
-    let s = v.iter().map(|x| x.abs()).fold(0.0, f64::max);
-    let w: Vec<f64> = v.iter().map(|x| if x.abs() < 1e-9 * s { 0.0 } else { x / s }).collect();
-    Err(SolveError::UnderConstrained {
-        motion: format!(
-            "translation ({:.2}, {:.2}, {:.2}) + rotation ({:.2}, {:.2}, {:.2}) about ({:.3}, {:.3}, {:.3}) m",
-            w[0], w[1], w[2], w[3], w[4], w[5], c[0], c[1], c[2]
-        ),
-    })
 }

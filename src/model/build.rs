@@ -19,7 +19,7 @@ use crate::physics::spring::{spring_stiffness, Springs};
 pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
     let adj = FaceAdjacency::build(mesh)?;
     let coords = perturbed_coordinates(mesh, spec, &adj)?;
-    let (interfaces, face_interface) = classify_interfaces(mesh, spec)?;
+    let (interfaces, face_interface) = classify_interfaces(mesh, spec, &adj)?;
     let interface_of = |key: &FaceKey| face_interface.get(key).copied().unwrap_or(0);
 
     // 3. Node copies: one per (cell, corner) slot, merged across merged faces.
@@ -134,7 +134,7 @@ pub fn fixed_mesh_nodes(mesh: &Mesh, spec: &ModelSpec) -> Result<Vec<bool>, Erro
             .groups
             .iter()
             .find(|g| g.name == bc.group && g.dim < 3)
-            .ok_or_else(|| unknown_group(format!("boundary[{b}].group"), &bc.group, "surface"))?;
+            .ok_or_else(|| unknown_group(mesh, format!("boundary[{b}].group"), &bc.group, "surface"))?;
         for n in mesh.group_nodes(g) {
             for axis in &bc.fix {
                 fixed[3 * n + axis.index()] = true;
@@ -144,8 +144,13 @@ pub fn fixed_mesh_nodes(mesh: &Mesh, spec: &ModelSpec) -> Result<Vec<bool>, Erro
     Ok(fixed)
 }
 
-pub fn unknown_group(key: String, group: &str, what: &str) -> Error {
-    ModelError::UnknownGroup { key, group: group.to_string(), what: what.to_string() }.into()
+/// An unknown group, answered with the groups of that kind the mesh has.
+pub fn unknown_group(mesh: &Mesh, key: String, group: &str, what: &str) -> Error {
+    let dims: &[u8] = if what == "volume" { &[3] } else { &[0, 1, 2] };
+    let names: Vec<String> =
+        mesh.groups.iter().filter(|g| dims.contains(&g.dim)).map(|g| format!("{:?}", g.name)).collect();
+    let available = if names.is_empty() { "none".to_string() } else { names.join(", ") };
+    ModelError::UnknownGroup { key, group: group.to_string(), what: what.to_string(), available }.into()
 }
 
 /// The scene's node perturbation (shared with the FEM, so both see the same
@@ -158,7 +163,7 @@ pub fn perturbed_coordinates(mesh: &Mesh, spec: &ModelSpec, adj: &FaceAdjacency)
             .groups
             .iter()
             .find(|g| &g.name == name && g.dim == 2)
-            .ok_or_else(|| unknown_group(format!("perturbation.keep_flat[{i}]"), name, "surface"))?;
+            .ok_or_else(|| unknown_group(mesh, format!("perturbation.keep_flat[{i}]"), name, "surface"))?;
         flat.push(g);
     }
     perturb_nodes(mesh, adj, p.ratio, p.seed, &flat).map_err(|(c, d)| {
@@ -170,7 +175,11 @@ pub fn perturbed_coordinates(mesh: &Mesh, spec: &ModelSpec, adj: &FaceAdjacency)
 }
 
 /// Interface 0 is `[joints]`; each `[[interface]]` maps its facets' keys to its index.
-fn classify_interfaces(mesh: &Mesh, spec: &ModelSpec) -> Result<(Vec<Interface>, HashMap<FaceKey, usize>), Error> {
+fn classify_interfaces(
+    mesh: &Mesh,
+    spec: &ModelSpec,
+    adj: &FaceAdjacency,
+) -> Result<(Vec<Interface>, HashMap<FaceKey, usize>), Error> {
     let mut interfaces = vec![Interface {
         name: "joints".into(),
         mode: spec.joints.mode,
@@ -182,7 +191,19 @@ fn classify_interfaces(mesh: &Mesh, spec: &ModelSpec) -> Result<(Vec<Interface>,
             .groups
             .iter()
             .find(|g| g.name == s.group && g.dim == 2)
-            .ok_or_else(|| unknown_group(format!("interface[{i}].group"), &s.group, "surface"))?;
+            .ok_or_else(|| unknown_group(mesh, format!("interface[{i}].group"), &s.group, "surface"))?;
+        let internal: std::collections::HashSet<FaceKey> =
+            adj.shared.iter().map(|s| face_key(&face_nodes(mesh, s.cells[0], s.faces[0]))).collect();
+        let outer = g.facets.iter().filter(|f| !internal.contains(&face_key(f.nodes()))).count();
+        if outer > 0 {
+            return Err(ModelError::NotAnInterface {
+                key: format!("interface[{i}].group"),
+                group: s.group.clone(),
+                outer,
+                facets: g.facets.len(),
+            }
+            .into());
+        }
         for f in &g.facets {
             map.insert(face_key(f.nodes()), i + 1);
         }
@@ -199,13 +220,24 @@ pub fn cell_materials(mesh: &Mesh, spec: &ModelSpec) -> Result<Vec<u16>, Error> 
             .groups
             .iter()
             .find(|g| g.name == m.group && g.dim == 3)
-            .ok_or_else(|| unknown_group(format!("material[{i}].group"), &m.group, "volume"))?;
+            .ok_or_else(|| unknown_group(mesh, format!("material[{i}].group"), &m.group, "volume"))?;
         for &c in &g.cells {
             mat[c] = i as u16;
         }
     }
     if let Some(c) = mat.iter().position(|&m| m == u16::MAX) {
-        return Err(ModelError::NoMaterial { element: mesh.cells[c].tag }.into());
+        let names: Vec<String> = mesh
+            .groups
+            .iter()
+            .filter(|g| g.dim == 3 && g.cells.contains(&c))
+            .map(|g| format!("{:?}", g.name))
+            .collect();
+        let groups = if names.is_empty() {
+            " (none: the element is in no volume group)".into()
+        } else {
+            format!(" {}", names.join(", "))
+        };
+        return Err(ModelError::NoMaterial { element: mesh.cells[c].tag, groups }.into());
     }
     Ok(mat)
 }

@@ -4,6 +4,7 @@
 
 mod build;
 pub mod spec;
+pub mod supports;
 
 pub use build::build;
 pub use build::{cell_materials, fixed_mesh_nodes, perturbed_coordinates, spec_materials};
