@@ -103,3 +103,21 @@ fn a_missing_mesh_file_names_the_path() {
     assert!(matches!(err, Error::Io { .. }), "{err}");
     assert!(err.to_string().contains("no-such.msh"));
 }
+
+/// A cell whose volume group has no `[[material]]`: the error names the
+/// element and its group (the slip slope's "rest", with only "mass" given).
+#[test]
+fn a_cell_without_material_names_its_volume_group() {
+    let text = std::fs::read_to_string("verification/cases/slope-slip/slope-slip.toml").unwrap();
+    let i = text.find("[[material]]\ngroup = \"rest\"").unwrap();
+    let j = i + text[i..].find("[joints]").unwrap();
+    let text = format!("{}{}", &text[..i], &text[j..]);
+    let scene = Scene::from_toml(&text, Path::new("verification/cases/slope-slip"), Path::new("test.toml")).unwrap();
+    match cdem::drivers::build_model(&scene) {
+        Err(e @ Error::Model(ModelError::NoMaterial { .. })) => {
+            let msg = e.to_string();
+            assert!(msg.contains("its volume group \"rest\" is not given a [[material]]"), "{msg}");
+        }
+        other => panic!("expected NoMaterial, got {:?}", other.err()),
+    }
+}
