@@ -316,19 +316,25 @@ fn input_errors_name_the_key() {
     let base = std::fs::read_to_string(reg::LEM_ACADS_1A.input).unwrap();
     let cases = [
         (base.replace("z_min = 20.0", "z_min = 20.0\nwater = 1.0"), "water"),
-        (base.replace("friction_angle = 19.6", "friction_angle = 95.0"), "material.friction_angle"),
+        (base.replace("friction_angle = 19.6", "friction_angle = 95.0"), "material[0].friction_angle"),
         (base.replace("nx = 20", "nx = 0"), "search.grid.nx"),
         (base.replace("z_min = 20.0", "z_min = 30.0"), "section.z_min"),
         (base.replace("[50.0, 35.0], [70.0", "[50.0, 35.0], [45.0"), "section.ground[3]"),
         (base.replace("z_min = 20.0", "z_min = 20.0\nfrom_mesh = \"x.msh\""), "section.from_mesh"),
         (base.replace("slices = 50", "slices = 1"), "analysis.slices"),
         (base.replace("methods = [\"ordinary\", \"bishop\", \"spencer\"]", "methods = [\"janbu\"]"), "janbu"),
-        (base.replace("unit_weight = 20.0e3", "unit_weight = -1.0"), "material.unit_weight"),
+        (base.replace("unit_weight = 20.0e3", "unit_weight = -1.0"), "material[0].unit_weight"),
     ];
     for (text, key) in cases {
         let err = parse(&text).unwrap_err().to_string();
         assert!(err.contains(key), "error for {key:?} does not name it: {err}");
     }
+    // With two materials, the bad one is named by its index.
+    let two = format!(
+        "{base}\n[[material]]\nname = \"weak\"\ncohesion = -1.0\nfriction_angle = 10.0\nunit_weight = 20.0e3\nzone = [[20.0, 20.0], [70.0, 20.0], [70.0, 22.0]]\n"
+    );
+    let err = parse(&two).unwrap_err().to_string();
+    assert!(err.contains("material[1].cohesion"), "{err}");
     let err = parse(&format!("{base}\n[circle]\nxc = 1.0\nzc = 2.0\nr = 3.0\n")).unwrap_err().to_string();
     assert!(err.contains("circle"), "{err}");
 }

@@ -329,6 +329,8 @@ impl LemInput {
         for (i, m) in file.material.into_iter().enumerate() {
             let material =
                 Material { cohesion: m.cohesion, friction_angle: m.friction_angle, unit_weight: m.unit_weight };
+            // Checked here, where the file's index is known (the section only sees zones).
+            super::section::check_material(&format!("material[{i}]"), &material)?;
             match m.zone {
                 Some(polygon) => zones.push(Zone { polygon, material }),
                 None if background.is_some() => {

@@ -149,7 +149,7 @@ fn check_polyline(key: &str, pts: &[[f64; 2]]) -> Result<(), SceneError> {
     Ok(())
 }
 
-fn check_material(key: &str, m: &Material) -> Result<(), SceneError> {
+pub(crate) fn check_material(key: &str, m: &Material) -> Result<(), SceneError> {
     if !(m.cohesion.is_finite() && m.cohesion >= 0.0) {
         return Err(SceneError::invalid(format!("{key}.cohesion"), "must be finite and >= 0 (Pa)"));
     }
