@@ -85,6 +85,8 @@ pub enum ModelError {
     UnknownGroup { key: String, group: String, what: String, available: String },
     #[error("scene key `{key}`: group {group:?} has {outer} of its {facets} facets on the outer surface, not between two elements: an [[interface]] must be an internal surface")]
     NotAnInterface { key: String, group: String, outer: usize, facets: usize },
+    #[error("scene key `{key}`: group {group:?} is not one plane: a node lies {deviation:.3e} m from its plane (extent {extent:.3e} m); keep_flat needs a plane, keep_on keeps nodes on a curved surface")]
+    NotPlanar { key: String, group: String, deviation: f64, extent: f64 },
     #[error("part {part} of the model ({elements} elements, the first gmsh element {first_element}) is free to move: the [[boundary]] fixities leave the rigid motion {motion} unresisted; fix more components on a boundary group of that part")]
     FreeRigidMotion { part: usize, elements: usize, first_element: u64, motion: String },
 }

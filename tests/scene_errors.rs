@@ -121,3 +121,29 @@ fn a_cell_without_material_names_its_volume_group() {
         other => panic!("expected NoMaterial, got {:?}", other.err()),
     }
 }
+
+/// `keep_flat` needs a plane: the slip circle is refused, naming the key,
+/// the group and how far it is from a plane; `keep_on` takes it.
+#[test]
+fn keep_flat_on_a_curved_group_is_refused_with_its_deviation() {
+    let text = std::fs::read_to_string("verification/cases/slope-slip/slope-slip.toml").unwrap();
+    assert!(text.contains("keep_on = [\"slip\"]"));
+    let flat = text.replace("keep_on = [\"slip\"]", "keep_flat = [\"slip\"]");
+    let scene = Scene::from_toml(&flat, Path::new("verification/cases/slope-slip"), Path::new("test.toml")).unwrap();
+    match cdem::drivers::build_model(&scene) {
+        Err(e @ Error::Model(ModelError::NotPlanar { .. })) => {
+            let msg = e.to_string();
+            assert!(msg.contains("perturbation.keep_flat[0]") && msg.contains("\"slip\" is not one plane"), "{msg}");
+            let Error::Model(ModelError::NotPlanar { deviation, extent, .. }) = e else { unreachable!() };
+            // A circular arc through (20, 20) and about (48, 40): it bows metres away from its chord plane.
+            assert!(deviation > 1.0 && extent > 10.0, "deviation {deviation} m, extent {extent} m");
+        }
+        other => panic!("expected NotPlanar, got {:?}", other.err()),
+    }
+    // A plane group passes: the column's side faces.
+    let column = std::fs::read_to_string("verification/cases/column/column-merged.toml")
+        .unwrap()
+        .replace("[[material]]", "[perturbation]\nratio = 0.1\nkeep_flat = [\"xmin\", \"bottom\"]\n\n[[material]]");
+    let scene = Scene::from_toml(&column, Path::new("verification/cases/column"), Path::new("test.toml")).unwrap();
+    cdem::drivers::build_model(&scene).unwrap();
+}

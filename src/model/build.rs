@@ -2,7 +2,7 @@
 
 use std::collections::HashMap;
 
-use super::spec::{JointMode, ModelSpec};
+use super::spec::{JointMode, ModelSpec, PLANE_TOLERANCE};
 use super::{Elements, Gather, Interface, Model};
 use crate::error::{Error, ModelError};
 use crate::mesh::adjacency::{face_key, face_nodes, FaceAdjacency, FaceKey};
@@ -158,13 +158,22 @@ pub fn unknown_group(mesh: &Mesh, key: String, group: &str, what: &str) -> Error
 pub fn perturbed_coordinates(mesh: &Mesh, spec: &ModelSpec, adj: &FaceAdjacency) -> Result<Vec<[f64; 3]>, Error> {
     let p = &spec.perturbation;
     let mut flat = Vec::new();
-    for (i, name) in p.keep_flat.iter().enumerate() {
-        let g = mesh
-            .groups
-            .iter()
-            .find(|g| &g.name == name && g.dim == 2)
-            .ok_or_else(|| unknown_group(mesh, format!("perturbation.keep_flat[{i}]"), name, "surface"))?;
-        flat.push(g);
+    for (list, names) in [("keep_flat", &p.keep_flat), ("keep_on", &p.keep_on)] {
+        for (i, name) in names.iter().enumerate() {
+            let key = format!("perturbation.{list}[{i}]");
+            let g = mesh
+                .groups
+                .iter()
+                .find(|g| &g.name == name && g.dim == 2)
+                .ok_or_else(|| unknown_group(mesh, key.clone(), name, "surface"))?;
+            if list == "keep_flat" {
+                let (deviation, extent) = plane_deviation(mesh, g);
+                if deviation > PLANE_TOLERANCE * extent {
+                    return Err(ModelError::NotPlanar { key, group: name.clone(), deviation, extent }.into());
+                }
+            }
+            flat.push(g);
+        }
     }
     perturb_nodes(mesh, adj, p.ratio, p.seed, &flat).map_err(|(c, d)| {
         let (tet, volume) = match d {
@@ -172,6 +181,32 @@ pub fn perturbed_coordinates(mesh: &Mesh, spec: &ModelSpec, adj: &FaceAdjacency)
         };
         ModelError::PerturbationInverts { element: mesh.cells[c].tag, tet, volume }.into()
     })
+}
+
+/// The largest distance of a surface group's nodes from its plane (through
+/// the nodes' centroid, normal the area-weighted facet normal, facets
+/// oriented alike), and the group's extent (largest distance from the
+/// centroid), both in m.
+fn plane_deviation(mesh: &Mesh, g: &crate::mesh::PhysicalGroup) -> (f64, f64) {
+    let nodes = mesh.group_nodes(g);
+    let m = nodes.len().max(1) as f64;
+    let c = [0, 1, 2].map(|d| nodes.iter().map(|&i| mesh.nodes[i][d]).sum::<f64>() / m);
+    let mut n = [0.0; 3];
+    for f in g.facets.iter().filter(|f| f.n >= 3) {
+        let p: Vec<[f64; 3]> = f.nodes().iter().map(|&i| mesh.nodes[i]).collect();
+        let (fnorm, area) = crate::mesh::adjacency::polygon_normal_area(&p);
+        let s = if n[0] * fnorm[0] + n[1] * fnorm[1] + n[2] * fnorm[2] < 0.0 { -area } else { area };
+        n = [0, 1, 2].map(|d| n[d] + s * fnorm[d]);
+    }
+    let len = norm(n);
+    let r = |i: usize| sub(mesh.nodes[i], c);
+    let extent = nodes.iter().map(|&i| norm(r(i))).fold(0.0, f64::max);
+    if len == 0.0 {
+        return (0.0, extent);
+    }
+    let deviation =
+        nodes.iter().map(|&i| ((r(i)[0] * n[0] + r(i)[1] * n[1] + r(i)[2] * n[2]) / len).abs()).fold(0.0, f64::max);
+    (deviation, extent)
 }
 
 /// Interface 0 is `[joints]`; each `[[interface]]` maps its facets' keys to its index.

@@ -29,10 +29,21 @@ pub struct Perturbation {
     pub ratio: f64,
     #[serde(default)]
     pub seed: u64,
-    /// Surface groups whose nodes may move only within the group's plane.
+    /// Plane surface groups whose nodes may move only within the group's
+    /// plane. A group that is not one plane (within [`PLANE_TOLERANCE`] of
+    /// its size) is an error: use `keep_on`.
     #[serde(default)]
     pub keep_flat: Vec<String>,
+    /// Surface groups whose nodes stay on the surface: each node moves only
+    /// within the planes of its facets, so on a curved group (a slip circle)
+    /// a node where facets meet at an angle does not move.
+    #[serde(default)]
+    pub keep_on: Vec<String>,
 }
+
+/// How far (relative to the group's extent) a `keep_flat` group's nodes may
+/// lie from its plane.
+pub const PLANE_TOLERANCE: f64 = 1e-9;
 
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]

@@ -8,7 +8,8 @@
 //! [perturbation]                 # optional: stochastic structural planes
 //! ratio = 0.1                    # max offset per axis / local edge length
 //! seed = 1
-//! keep_flat = ["slip"]           # surface groups whose nodes stay on their plane
+//! keep_flat = ["xmin"]           # plane surface groups whose nodes stay on their plane
+//! keep_on = ["slip"]             # surface groups (curved too) whose nodes stay on them
 //!
 //! [[material]]
 //! group = "rock"                 # a volume physical group
