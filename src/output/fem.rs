@@ -1,5 +1,6 @@
 //! Outputs of `cdem fem`, in the form `cdem run` writes them: `summary.json`
-//! and `final.vtu` + `run.pvd`. The VTK grid is the continuous mesh: points
+//! and `final.vtu` + `run.pvd`. The VTK grid is the continuous mesh (cells as
+//! in [`super::vtk`]: hexahedra and prisms as planar-faced polyhedra): points
 //! are the mesh nodes at their (perturbed) reference positions, with the point
 //! field `displacement` (m) and the cell fields `material` and `sxx syy szz
 //! syz sxz sxy` (Pa, volume averages over the Gauss points).
@@ -7,9 +8,11 @@
 use std::fmt::Write;
 use std::path::Path;
 
-use super::{staged, vtk::write_pvd, write_atomic, write_json};
+use super::vtk::{polyhedron_faces, write_pvd};
+use super::{staged, write_atomic, write_json};
 use crate::error::Error;
 use crate::fem::FemSolution;
+use crate::mesh::CellKind;
 
 /// The `.vtu` text of a solution (ASCII VTK XML unstructured grid).
 pub fn vtu_string(sol: &FemSolution) -> String {
@@ -33,9 +36,24 @@ pub fn vtu_string(sol: &FemSolution) -> String {
     }
     s.push_str("\n</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
     for c in &sol.cells {
-        let _ = write!(s, "{} ", c.kind.vtk_type());
+        let _ = write!(s, "{} ", if c.kind == CellKind::Tet4 { 10 } else { 42 });
     }
-    s.push_str("\n</DataArray>\n</Cells>\n<PointData Vectors=\"displacement\">\n");
+    s.push_str("\n</DataArray>\n");
+    if sol.cells.iter().any(|c| c.kind != CellKind::Tet4) {
+        let (mut faces, mut offsets, mut end) = (String::new(), String::new(), 0usize);
+        for c in &sol.cells {
+            let corners: Vec<u32> = c.corners().iter().map(|&n| n as u32).collect();
+            let stream = polyhedron_faces(c.kind, &corners, &sol.coords);
+            end += stream.len();
+            let ids: Vec<String> = stream.iter().map(|v| v.to_string()).collect();
+            let _ = writeln!(faces, "{}", ids.join(" "));
+            let _ = write!(offsets, "{} ", if stream.is_empty() { -1 } else { end as i64 });
+        }
+        let _ = write!(s, "<DataArray type=\"Int64\" Name=\"faces\" format=\"ascii\">\n{faces}</DataArray>\n");
+        let _ =
+            write!(s, "<DataArray type=\"Int64\" Name=\"faceoffsets\" format=\"ascii\">\n{offsets}\n</DataArray>\n");
+    }
+    s.push_str("</Cells>\n<PointData Vectors=\"displacement\">\n");
     s.push_str("<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n");
     for d in sol.u.chunks(3) {
         let _ = writeln!(s, "{:e} {:e} {:e}", d[0], d[1], d[2]);

@@ -1,12 +1,21 @@
 //! VTK XML unstructured grids (`.vtu`, ASCII) and their collection (`.pvd`).
 //! Points are the node copies at their reference (perturbed) positions, so a
 //! joint that opens shows as a gap once warped by `displacement`.
+//!
+//! A perturbed hexahedron or prism has non-planar quadrilateral faces, which
+//! VTK's own cell checks reject for VTK_HEXAHEDRON and VTK_WEDGE. They are
+//! written as what they are: VTK_POLYHEDRON (42) cells whose faces are
+//! planar: a planar quadrilateral stays whole, a non-planar one is split into
+//! two triangles along the diagonal that folds outward (the convex split).
+//! Tetrahedra stay VTK_TETRA. `scripts/check_vtk.py` checks a file with
+//! VTK's cell validator.
 
 use std::fmt::Write;
 use std::path::Path;
 
 use super::write_atomic;
 use crate::error::Error;
+use crate::mesh::shape::{cross, dot, sub, CellKind};
 use crate::model::Model;
 
 /// One frame's fields.
@@ -37,9 +46,27 @@ pub fn vtu_string(model: &Model, frame: &Frame) -> String {
     }
     s.push_str("\n</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
     for k in &el.kind {
-        let _ = write!(s, "{} ", k.vtk_type());
+        let _ = write!(s, "{} ", if *k == CellKind::Tet4 { 10 } else { VTK_POLYHEDRON });
     }
-    s.push_str("\n</DataArray>\n</Cells>\n<PointData Vectors=\"displacement\">\n");
+    s.push_str("\n</DataArray>\n");
+    if el.kind.iter().any(|k| *k != CellKind::Tet4) {
+        // Per cell: the face stream (number of faces, then per face its point
+        // count and ids; empty for a tetrahedron) and its end offset.
+        let mut faces = String::new();
+        let mut offsets = String::new();
+        let mut end = 0usize;
+        for e in 0..el.len() {
+            let stream = polyhedron_faces(el.kind[e], el.corners(e), &model.x0);
+            end += stream.len();
+            let ids: Vec<String> = stream.iter().map(|v| v.to_string()).collect();
+            let _ = writeln!(faces, "{}", ids.join(" "));
+            let _ = write!(offsets, "{} ", if stream.is_empty() { -1 } else { end as i64 });
+        }
+        let _ = write!(s, "<DataArray type=\"Int64\" Name=\"faces\" format=\"ascii\">\n{faces}</DataArray>\n");
+        let _ =
+            write!(s, "<DataArray type=\"Int64\" Name=\"faceoffsets\" format=\"ascii\">\n{offsets}\n</DataArray>\n");
+    }
+    s.push_str("</Cells>\n<PointData Vectors=\"displacement\">\n");
     s.push_str("<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n");
     for d in frame.u.chunks(3) {
         let _ = writeln!(s, "{:e} {:e} {:e}", d[0], d[1], d[2]);
@@ -61,6 +88,51 @@ pub fn vtu_string(model: &Model, frame: &Frame) -> String {
     }
     s.push_str("</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
     s
+}
+
+/// A quadrilateral whose fourth corner lies within this fraction of its size
+/// from the plane of the other three is written as one planar face.
+const PLANAR: f64 = 1e-12;
+
+/// VTK's cell type of a polyhedron given by its faces.
+const VTK_POLYHEDRON: u8 = 42;
+
+/// The VTK face stream of a cell (empty for a tetrahedron): the number of
+/// faces, then each face as its point count and point ids, outward. A planar
+/// quadrilateral stays one face; a non-planar `a b c d` becomes two
+/// triangles split along `a c` when `d` lies on the inner side of the plane
+/// `a b c` (the fold is convex), along `b d` otherwise.
+pub fn polyhedron_faces(kind: CellKind, corners: &[u32], x: &[[f64; 3]]) -> Vec<u32> {
+    if kind == CellKind::Tet4 {
+        return Vec::new();
+    }
+    let mut polys: Vec<Vec<u32>> = Vec::new();
+    for face in kind.faces() {
+        let ids: Vec<u32> = face.iter().map(|&k| corners[k]).collect();
+        match ids[..] {
+            [a, b, c, d] => {
+                let p = |i: u32| x[i as usize];
+                let n = cross(sub(p(b), p(a)), sub(p(c), p(a)));
+                let size = [sub(p(c), p(a)), sub(p(d), p(b))].iter().map(|v| dot(*v, *v)).fold(0.0, f64::max);
+                // Signed volume of the fold: d's height over the plane a b c, times |n|.
+                let fold = dot(n, sub(p(d), p(a)));
+                if fold.abs() <= PLANAR * size * size.sqrt() {
+                    polys.push(ids); // planar: one face (a flat fold would read as non-convex)
+                } else if fold < 0.0 {
+                    polys.extend([vec![a, b, c], vec![a, c, d]]);
+                } else {
+                    polys.extend([vec![a, b, d], vec![b, c, d]]);
+                }
+            }
+            _ => polys.push(ids),
+        }
+    }
+    let mut stream = vec![polys.len() as u32];
+    for f in polys {
+        stream.push(f.len() as u32);
+        stream.extend(f);
+    }
+    stream
 }
 
 pub fn write_vtu(path: &Path, model: &Model, frame: &Frame) -> Result<(), Error> {
