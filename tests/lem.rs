@@ -329,6 +329,10 @@ fn input_errors_name_the_key() {
         let err = parse(&text).unwrap_err().to_string();
         assert!(err.contains(key), "error for {key:?} does not name it: {err}");
     }
+    // A facing against the ground: the search finds nothing and names the facing.
+    let wrong = parse(&base.replace("facing = \"left\"", "facing = \"right\"")).unwrap();
+    let err = cdem::lem::analyse(&wrong).unwrap_err().to_string();
+    assert!(err.contains("section.facing is Right") && err.contains("a wrong facing is the likely cause"), "{err}");
     // With two materials, the bad one is named by its index.
     let two = format!(
         "{base}\n[[material]]\nname = \"weak\"\ncohesion = -1.0\nfriction_angle = 10.0\nunit_weight = 20.0e3\nzone = [[20.0, 20.0], [70.0, 20.0], [70.0, 22.0]]\n"

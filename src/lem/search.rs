@@ -430,9 +430,23 @@ pub(crate) fn run(input: &LemInput, spec: &SearchSpec) -> Result<LemResult, crat
     }
     if input.methods.iter().all(|m| best[m.index()].is_none()) {
         let (i, most) = acc.reasons.iter().enumerate().max_by_key(|(_, &c)| c).expect("eight reasons");
+        let sec = &input.section;
+        let hint = match sec.ground_facing() {
+            Some(g) if g != sec.facing() => format!(
+                "; section.facing is {:?} but the ground rises toward its {} end (the slope faces {:?}): \
+                 a wrong facing is the likely cause",
+                sec.facing(),
+                if g == super::section::Facing::Left { "right" } else { "left" },
+                g
+            ),
+            _ => "; check the search ranges".to_string(),
+        };
         return Err(SceneError::invalid(
             "search",
-            format!("no admissible slip circle among {} trial circles (most rejected as {}: {most}); check the search ranges", acc.rejected, REASONS[i]),
+            format!(
+                "no admissible slip circle among {} trial circles (most rejected as {}: {most}){hint}",
+                acc.rejected, REASONS[i]
+            ),
         )
         .into());
     }

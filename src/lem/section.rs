@@ -319,6 +319,12 @@ impl LemSection {
     pub fn facing(&self) -> Facing {
         self.facing
     }
+    /// The facing the ground's ends suggest (the crest at the higher end),
+    /// None if they are level.
+    pub fn ground_facing(&self) -> Option<Facing> {
+        let (z0, z1) = (self.ground[0][1], self.ground[self.ground.len() - 1][1]);
+        (z0 != z1).then_some(if z1 > z0 { Facing::Left } else { Facing::Right })
+    }
     /// Ground height at x (m).
     pub fn ground_z(&self, x: f64) -> f64 {
         polyline_z(&self.ground, x)
