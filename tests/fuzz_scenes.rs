@@ -85,7 +85,7 @@ fn pick<'a>(rng: &mut SplitMix64, v: &[&'a str]) -> &'a str {
 fn scene_case(rng: &mut SplitMix64, mesh: &Mesh) -> (String, Vec<Defect>) {
     let mut defects = Vec::new();
     let n_defects = rng.next_u64() % 3;
-    let mut inject = |rng: &mut SplitMix64| {
+    let inject = |rng: &mut SplitMix64| {
         let all = [
             Defect::UnknownBoundaryGroup,
             Defect::UnknownMaterialGroup,
@@ -114,7 +114,7 @@ fn scene_case(rng: &mut SplitMix64, mesh: &Mesh) -> (String, Vec<Defect>) {
     // Perturbation; keep_flat on plane groups, keep_on on curved ones.
     let ratio = [0.0, 0.05, 0.1, 0.15][(rng.next_u64() % 4) as usize];
     t += &format!("[perturbation]\nratio = {ratio}\nseed = {}\n", rng.next_u64() % 1000);
-    let mut flat: Vec<&str> = mesh.planes.iter().copied().filter(|_| rng.next_u64() % 3 == 0).collect();
+    let mut flat: Vec<&str> = mesh.planes.iter().copied().filter(|_| rng.next_u64().is_multiple_of(3)).collect();
     if has(Defect::CurvedKeepFlat) {
         flat.push(mesh.internal[0]);
     }
@@ -132,14 +132,14 @@ fn scene_case(rng: &mut SplitMix64, mesh: &Mesh) -> (String, Vec<Defect>) {
         t +=
             &format!("[[material]]\ngroup = {name:?}\nyoungs_modulus = 3.0e8\npoisson_ratio = 0.3\ndensity = 2100.0\n");
     }
-    let springs = rng.next_u64() % 2 == 0;
+    let springs = rng.next_u64().is_multiple_of(2);
     t += if springs {
         "[joints]\nmode = \"springs\"\nnormal_modulus = 1.0e11\nshear_modulus = 3.85e10\nthickness = 1.0\n"
     } else {
         "[joints]\nmode = \"merged\"\n"
     };
     for g in mesh.internal {
-        if rng.next_u64() % 2 == 0 {
+        if rng.next_u64().is_multiple_of(2) {
             t += &format!("[[interface]]\ngroup = {g:?}\nmode = \"springs\"\nnormal_modulus = 1.0e11\nshear_modulus = 3.85e10\nthickness = 1.0\nstrength = {{ tensile = 1.0e4, cohesion = 1.0e4, friction_angle = 20.0 }}\n");
         }
     }
@@ -153,7 +153,7 @@ fn scene_case(rng: &mut SplitMix64, mesh: &Mesh) -> (String, Vec<Defect>) {
     t += &format!("[[boundary]]\ngroup = {base:?}\nfix = {base_fix}\n");
     if !has(Defect::Unsupported) {
         for g in mesh.planes.iter().filter(|g| **g != mesh.base) {
-            if rng.next_u64() % 3 == 0 {
+            if rng.next_u64().is_multiple_of(3) {
                 t += &format!("[[boundary]]\ngroup = {g:?}\nfix = [{:?}]\n", pick(rng, &["x", "y", "z"]));
             }
         }
