@@ -8,7 +8,7 @@
 //!
 //! The pipeline: [`scene::Scene::load`] -> [`mesh::gmsh::read_msh`] ->
 //! [`model::build`] (perturbation, node copies, element operators, springs) ->
-//! [`solver::relax`] (phase 1, then phase 2 for a scene with `[failure]`),
+//! [`solver::relax()`] (phase 1, then phase 2 for a scene with `[failure]`),
 //! driven by [`drivers::run_scene`] -> [`output::write_run`].
 //!
 //! ```no_run

@@ -1,7 +1,7 @@
 //! Phase 2 of a run: progressive failure (the paper's section 3.4).
 //!
 //! From the elastic state of phase 1, the breakable interfaces check
-//! eq. 17-18 and the model relaxes again ([`crate::solver::relax`]) until:
+//! eq. 17-18 and the model relaxes again ([`crate::solver::relax()`]) until:
 //! - a new equilibrium: the unbalanced ratio below the tolerance
 //!   ([`EndState::Equilibrium`]);
 //! - global sliding: the largest displacement since phase 1 passes

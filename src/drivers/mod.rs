@@ -1,6 +1,6 @@
 //! Drivers: a scene from its file to its results, in memory. They sit above
 //! the solver, the FEM and the LEM and below `output` (which writes what they
-//! return), and they relax only through [`solver::relax`](crate::solver::relax).
+//! return), and they relax only through [`solver::relax`](crate::solver::relax()).
 //!
 //! - [`run`]: the CDEM run of a scene: phase 1 (elastic) and, for a scene
 //!   with `[failure]`, phase 2 ([`failure`]: breakable joints, stages, end state);

@@ -12,7 +12,7 @@
 //! - [`timing`]: a step, dynamic relaxation to the scene's tolerance, the
 //!   implicit FEM solve of the same mesh;
 //! - [`pyslope`]: the LEM grid search against pySlope's recorded time;
-//! - [`headline`]: the four figures on the paper slope;
+//! - [`headline`](mod@headline): the four figures on the paper slope;
 //! - [`damping`]: damping kind x mass scaling x block masses on one scene;
 //! - [`scaling`]: cost against size, fitted exponents;
 //! - [`tables`]: the Markdown tables, the CSV files and the figure.
