@@ -37,14 +37,6 @@ impl CellKind {
             _ => None,
         }
     }
-    /// VTK cell type number (gmsh's node order equals VTK's for these).
-    pub fn vtk_type(self) -> u8 {
-        match self {
-            CellKind::Tet4 => 10,
-            CellKind::Hex8 => 12,
-            CellKind::Prism6 => 13,
-        }
-    }
     pub fn n_nodes(self) -> usize {
         match self {
             CellKind::Tet4 => 4,

@@ -25,38 +25,54 @@ pub struct Frame<'a> {
     pub stress: Option<&'a [[f64; 6]]>,
 }
 
+/// The `.vtu` text of a model's frame: points the node copies, cells the elements.
 pub fn vtu_string(model: &Model, frame: &Frame) -> String {
     let el = &model.elements;
+    let cells: Vec<(CellKind, &[u32])> = (0..el.len()).map(|e| (el.kind[e], el.corners(e))).collect();
+    grid_vtu(&model.x0, &cells, frame.u, &el.material, frame.stress)
+}
+
+/// The `.vtu` text (ASCII VTK XML unstructured grid) of `points`, `cells`
+/// (kind and point ids, written as in the module doc) and the fields: the
+/// point field `displacement` (m, 3 per point) and the cell fields `material`
+/// and, if given, `sxx syy szz syz sxz sxy` (Pa). `cdem run` and `cdem fem`
+/// both write through it.
+pub fn grid_vtu<C: AsRef<[u32]>>(
+    points: &[[f64; 3]],
+    cells: &[(CellKind, C)],
+    u: &[f64],
+    material: &[u16],
+    stress: Option<&[[f64; 6]]>,
+) -> String {
     let mut s = String::new();
-    let n = model.n_nodes();
     let _ = writeln!(s, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>");
-    let _ = writeln!(s, "<Piece NumberOfPoints=\"{n}\" NumberOfCells=\"{}\">", el.len());
+    let _ = writeln!(s, "<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">", points.len(), cells.len());
     s.push_str("<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
-    for x in &model.x0 {
+    for x in points {
         let _ = writeln!(s, "{:e} {:e} {:e}", x[0], x[1], x[2]);
     }
     s.push_str("</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
-    for e in 0..el.len() {
-        let c: Vec<String> = el.corners(e).iter().map(|v| v.to_string()).collect();
-        let _ = writeln!(s, "{}", c.join(" "));
+    for (_, c) in cells {
+        let ids: Vec<String> = c.as_ref().iter().map(|v| v.to_string()).collect();
+        let _ = writeln!(s, "{}", ids.join(" "));
     }
     s.push_str("</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
-    for e in 0..el.len() {
-        let _ = write!(s, "{} ", el.offset[e + 1]);
+    let mut offset = 0;
+    for (_, c) in cells {
+        offset += c.as_ref().len();
+        let _ = write!(s, "{offset} ");
     }
     s.push_str("\n</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-    for k in &el.kind {
-        let _ = write!(s, "{} ", if *k == CellKind::Tet4 { 10 } else { VTK_POLYHEDRON });
+    for (k, _) in cells {
+        let _ = write!(s, "{} ", if *k == CellKind::Tet4 { VTK_TETRA } else { VTK_POLYHEDRON });
     }
     s.push_str("\n</DataArray>\n");
-    if el.kind.iter().any(|k| *k != CellKind::Tet4) {
+    if cells.iter().any(|(k, _)| *k != CellKind::Tet4) {
         // Per cell: the face stream (number of faces, then per face its point
         // count and ids; empty for a tetrahedron) and its end offset.
-        let mut faces = String::new();
-        let mut offsets = String::new();
-        let mut end = 0usize;
-        for e in 0..el.len() {
-            let stream = polyhedron_faces(el.kind[e], el.corners(e), &model.x0);
+        let (mut faces, mut offsets, mut end) = (String::new(), String::new(), 0usize);
+        for (k, c) in cells {
+            let stream = polyhedron_faces(*k, c.as_ref(), points);
             end += stream.len();
             let ids: Vec<String> = stream.iter().map(|v| v.to_string()).collect();
             let _ = writeln!(faces, "{}", ids.join(" "));
@@ -68,16 +84,16 @@ pub fn vtu_string(model: &Model, frame: &Frame) -> String {
     }
     s.push_str("</Cells>\n<PointData Vectors=\"displacement\">\n");
     s.push_str("<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n");
-    for d in frame.u.chunks(3) {
+    for d in u.chunks(3) {
         let _ = writeln!(s, "{:e} {:e} {:e}", d[0], d[1], d[2]);
     }
     s.push_str("</DataArray>\n</PointData>\n<CellData>\n");
     s.push_str("<DataArray type=\"Int32\" Name=\"material\" format=\"ascii\">\n");
-    for m in &el.material {
+    for m in material {
         let _ = write!(s, "{m} ");
     }
     s.push_str("\n</DataArray>\n");
-    if let Some(stress) = frame.stress {
+    if let Some(stress) = stress {
         for (c, name) in ["sxx", "syy", "szz", "syz", "sxz", "sxy"].iter().enumerate() {
             let _ = writeln!(s, "<DataArray type=\"Float64\" Name=\"{name}\" format=\"ascii\">");
             for st in stress {
@@ -90,11 +106,16 @@ pub fn vtu_string(model: &Model, frame: &Frame) -> String {
     s
 }
 
+pub fn write_vtu(path: &Path, model: &Model, frame: &Frame) -> Result<(), Error> {
+    write_atomic(path, vtu_string(model, frame).as_bytes())
+}
+
 /// A quadrilateral whose fourth corner lies within this fraction of its size
 /// from the plane of the other three is written as one planar face.
 const PLANAR: f64 = 1e-12;
 
-/// VTK's cell type of a polyhedron given by its faces.
+/// VTK's cell types: a tetrahedron, and a polyhedron given by its faces.
+const VTK_TETRA: u8 = 10;
 const VTK_POLYHEDRON: u8 = 42;
 
 /// The VTK face stream of a cell (empty for a tetrahedron): the number of
@@ -133,10 +154,6 @@ pub fn polyhedron_faces(kind: CellKind, corners: &[u32], x: &[[f64; 3]]) -> Vec<
         stream.extend(f);
     }
     stream
-}
-
-pub fn write_vtu(path: &Path, model: &Model, frame: &Frame) -> Result<(), Error> {
-    write_atomic(path, vtu_string(model, frame).as_bytes())
 }
 
 /// A `.pvd` collection of `(time, file name)` frames.
