@@ -104,15 +104,21 @@ fn a_missing_mesh_file_names_the_path() {
     assert!(err.to_string().contains("no-such.msh"));
 }
 
+/// The slip slope's scene with its text edited.
+fn slip_scene(edit: impl Fn(String) -> String) -> Scene {
+    let text = std::fs::read_to_string("verification/cases/slope-slip/slope-slip.toml").unwrap();
+    Scene::from_toml(&edit(text), Path::new("verification/cases/slope-slip"), Path::new("test.toml")).unwrap()
+}
+
 /// A cell whose volume group has no `[[material]]`: the error names the
 /// element and its group (the slip slope's "rest", with only "mass" given).
 #[test]
 fn a_cell_without_material_names_its_volume_group() {
-    let text = std::fs::read_to_string("verification/cases/slope-slip/slope-slip.toml").unwrap();
-    let i = text.find("[[material]]\ngroup = \"rest\"").unwrap();
-    let j = i + text[i..].find("[joints]").unwrap();
-    let text = format!("{}{}", &text[..i], &text[j..]);
-    let scene = Scene::from_toml(&text, Path::new("verification/cases/slope-slip"), Path::new("test.toml")).unwrap();
+    let scene = slip_scene(|text| {
+        let i = text.find("[[material]]\ngroup = \"rest\"").unwrap();
+        let j = i + text[i..].find("[joints]").unwrap();
+        format!("{}{}", &text[..i], &text[j..])
+    });
     match cdem::drivers::build_model(&scene) {
         Err(e @ Error::Model(ModelError::NoMaterial { .. })) => {
             let msg = e.to_string();
@@ -126,15 +132,14 @@ fn a_cell_without_material_names_its_volume_group() {
 /// the group and how far it is from a plane; `keep_on` takes it.
 #[test]
 fn keep_flat_on_a_curved_group_is_refused_with_its_deviation() {
-    let text = std::fs::read_to_string("verification/cases/slope-slip/slope-slip.toml").unwrap();
-    assert!(text.contains("keep_on = [\"slip\"]"));
-    let flat = text.replace("keep_on = [\"slip\"]", "keep_flat = [\"slip\"]");
-    let scene = Scene::from_toml(&flat, Path::new("verification/cases/slope-slip"), Path::new("test.toml")).unwrap();
+    let scene = slip_scene(|text| {
+        assert!(text.contains("keep_on = [\"slip\"]"));
+        text.replace("keep_on = [\"slip\"]", "keep_flat = [\"slip\"]")
+    });
     match cdem::drivers::build_model(&scene) {
-        Err(e @ Error::Model(ModelError::NotPlanar { .. })) => {
+        Err(e @ Error::Model(ModelError::NotPlanar { deviation, extent, .. })) => {
             let msg = e.to_string();
             assert!(msg.contains("perturbation.keep_flat[0]") && msg.contains("\"slip\" is not one plane"), "{msg}");
-            let Error::Model(ModelError::NotPlanar { deviation, extent, .. }) = e else { unreachable!() };
             // A circular arc through (20, 20) and about (48, 40): it bows metres away from its chord plane.
             assert!(deviation > 1.0 && extent > 10.0, "deviation {deviation} m, extent {extent} m");
         }
