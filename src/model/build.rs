@@ -1,13 +1,14 @@
 //! Building a [`Model`] from a mesh and its [`ModelSpec`], in named stages.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use super::spec::{JointMode, ModelSpec, PLANE_TOLERANCE};
+use super::union_find::UnionFind;
 use super::{Elements, Gather, Interface, Model};
 use crate::error::{Error, ModelError};
 use crate::mesh::adjacency::{face_key, face_nodes, FaceAdjacency, FaceKey};
 use crate::mesh::perturb::perturb_nodes;
-use crate::mesh::shape::{cross, norm, sub, CellDefect};
+use crate::mesh::shape::{cross, dot, norm, sub, CellDefect};
 use crate::mesh::Mesh;
 use crate::physics::element::element_operators;
 use crate::physics::material::{Material, YoungPoisson};
@@ -195,7 +196,7 @@ fn plane_deviation(mesh: &Mesh, g: &crate::mesh::PhysicalGroup) -> (f64, f64) {
     for f in g.facets.iter().filter(|f| f.n >= 3) {
         let p: Vec<[f64; 3]> = f.nodes().iter().map(|&i| mesh.nodes[i]).collect();
         let (fnorm, area) = crate::mesh::adjacency::polygon_normal_area(&p);
-        let s = if n[0] * fnorm[0] + n[1] * fnorm[1] + n[2] * fnorm[2] < 0.0 { -area } else { area };
+        let s = if dot(n, fnorm) < 0.0 { -area } else { area };
         n = [0, 1, 2].map(|d| n[d] + s * fnorm[d]);
     }
     let len = norm(n);
@@ -204,8 +205,7 @@ fn plane_deviation(mesh: &Mesh, g: &crate::mesh::PhysicalGroup) -> (f64, f64) {
     if len == 0.0 {
         return (0.0, extent);
     }
-    let deviation =
-        nodes.iter().map(|&i| ((r(i)[0] * n[0] + r(i)[1] * n[1] + r(i)[2] * n[2]) / len).abs()).fold(0.0, f64::max);
+    let deviation = nodes.iter().map(|&i| (dot(r(i), n) / len).abs()).fold(0.0, f64::max);
     (deviation, extent)
 }
 
@@ -221,14 +221,17 @@ fn classify_interfaces(
         strength: spec.joints.strength.map(Into::into),
     }];
     let mut map = HashMap::new();
+    // The internal faces (between two cells), once, if any interface is named.
+    let internal: HashSet<FaceKey> = match spec.interface.is_empty() {
+        true => HashSet::new(),
+        false => adj.shared.iter().map(|s| face_key(&face_nodes(mesh, s.cells[0], s.faces[0]))).collect(),
+    };
     for (i, s) in spec.interface.iter().enumerate() {
         let g = mesh
             .groups
             .iter()
             .find(|g| g.name == s.group && g.dim == 2)
             .ok_or_else(|| unknown_group(mesh, format!("interface[{i}].group"), &s.group, "surface"))?;
-        let internal: std::collections::HashSet<FaceKey> =
-            adj.shared.iter().map(|s| face_key(&face_nodes(mesh, s.cells[0], s.faces[0]))).collect();
         let outer = g.facets.iter().filter(|f| !internal.contains(&face_key(f.nodes()))).count();
         if outer > 0 {
             return Err(ModelError::NotAnInterface {
@@ -336,29 +339,4 @@ fn joint_moduli(spec: &ModelSpec, iface: usize) -> (f64, f64, f64) {
         }
     };
     (e.unwrap_or(f64::NAN), g.unwrap_or(f64::NAN), l.unwrap_or(f64::NAN))
-}
-
-/// Disjoint sets with path halving; the smaller index becomes the root so
-/// numbering is deterministic.
-struct UnionFind(Vec<usize>);
-
-impl UnionFind {
-    fn new(n: usize) -> Self {
-        Self((0..n).collect())
-    }
-    fn len(&self) -> usize {
-        self.0.len()
-    }
-    fn find(&mut self, mut x: usize) -> usize {
-        while self.0[x] != x {
-            self.0[x] = self.0[self.0[x]];
-            x = self.0[x];
-        }
-        x
-    }
-    fn union(&mut self, a: usize, b: usize) {
-        let (ra, rb) = (self.find(a), self.find(b));
-        let (lo, hi) = (ra.min(rb), ra.max(rb));
-        self.0[hi] = lo;
-    }
 }

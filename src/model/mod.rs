@@ -5,6 +5,7 @@
 mod build;
 pub mod spec;
 pub mod supports;
+mod union_find;
 
 pub use build::build;
 pub use build::{cell_materials, fixed_mesh_nodes, perturbed_coordinates, spec_materials};

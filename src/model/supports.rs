@@ -11,6 +11,7 @@
 
 use nalgebra::{Matrix6, SymmetricEigen};
 
+use super::union_find::UnionFind;
 use super::Model;
 
 /// A rigid motion that the fixities of a part leave free, described for a
@@ -81,35 +82,22 @@ pub struct FreePart {
 /// copies or by springs) whose fixities leave a rigid motion free.
 pub fn unsupported_part(model: &Model) -> Option<FreePart> {
     let n = model.n_nodes();
-    let mut parent: Vec<usize> = (0..n).collect();
-    fn find(p: &mut [usize], mut x: usize) -> usize {
-        while p[x] != x {
-            p[x] = p[p[x]];
-            x = p[x];
-        }
-        x
-    }
-    let join = |p: &mut Vec<usize>, a: usize, b: usize| {
-        let (ra, rb) = (find(p, a), find(p, b));
-        if ra != rb {
-            p[ra.max(rb)] = ra.min(rb);
-        }
-    };
+    let mut uf = UnionFind::new(n);
     let el = &model.elements;
     for e in 0..el.len() {
         let c = el.corners(e);
         for w in c.windows(2) {
-            join(&mut parent, w[0] as usize, w[1] as usize);
+            uf.union(w[0] as usize, w[1] as usize);
         }
     }
     for s in 0..model.springs.len() {
-        join(&mut parent, model.springs.a[s] as usize, model.springs.b[s] as usize);
+        uf.union(model.springs.a[s] as usize, model.springs.b[s] as usize);
     }
     // Parts in the order of their first element.
     let mut part_of_root = std::collections::HashMap::new();
     let mut parts: Vec<(Vec<usize>, usize, u64)> = Vec::new();
     for e in 0..el.len() {
-        let root = find(&mut parent, el.corners(e)[0] as usize);
+        let root = uf.find(el.corners(e)[0] as usize);
         let k = *part_of_root.entry(root).or_insert_with(|| {
             parts.push((Vec::new(), 0, el.tag[e]));
             parts.len() - 1
@@ -117,7 +105,7 @@ pub fn unsupported_part(model: &Model) -> Option<FreePart> {
         parts[k].1 += 1;
     }
     for i in 0..n {
-        if let Some(&k) = part_of_root.get(&find(&mut parent, i)) {
+        if let Some(&k) = part_of_root.get(&uf.find(i)) {
             parts[k].0.push(i);
         }
     }
