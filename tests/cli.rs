@@ -13,19 +13,8 @@ fn temp_dir(name: &str) -> PathBuf {
 
 #[test]
 fn run_writes_summary_history_and_vtk_frames() {
-    let out = temp_dir("run");
-    let scene = temp_dir("scene").with_extension("toml");
-    let text = std::fs::read_to_string("verification/cases/column/column-merged.toml").unwrap();
-    let text = text.replace(
-        "file = \"column.msh\"",
-        &format!("file = {:?}", std::fs::canonicalize("verification/cases/column/column.msh").unwrap()),
-    );
-    std::fs::write(&scene, format!("{text}\n[output]\nframe_every = 100\n")).unwrap();
-    let st = Command::new(env!("CARGO_BIN_EXE_cdem"))
-        .args(["run", scene.to_str().unwrap(), "--out", out.to_str().unwrap()])
-        .status()
-        .unwrap();
-    assert!(st.success());
+    let (scene, out) = edited_column("run", |t| format!("{t}\n[output]\nframe_every = 100\n"));
+    assert!(cdem_run(&scene, &out).status.success());
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
     for key in ["converged", "steps", "wall_s", "max_abs_uz", "min_uz", "min_szz", "failed_springs", "unbalanced_ratio"]
@@ -52,10 +41,7 @@ fn run_writes_summary_history_and_vtk_frames() {
 #[test]
 fn run_of_a_failure_scene_writes_both_phases_and_the_end_state() {
     let out = temp_dir("failure");
-    let o = Command::new(env!("CARGO_BIN_EXE_cdem"))
-        .args(["run", "verification/cases/slope-slip/slope-slip.toml", "--out", out.to_str().unwrap()])
-        .output()
-        .unwrap();
+    let o = cdem_run(std::path::Path::new("verification/cases/slope-slip/slope-slip.toml"), &out);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let text = std::fs::read_to_string(out.join("summary.json")).unwrap();
     assert!(text.trim_start().starts_with("{\n  \"end_state\": \"GlobalSliding\""), "end_state first:\n{text}");
@@ -127,16 +113,8 @@ fn run_of_a_failure_scene_writes_both_phases_and_the_end_state() {
 
 #[test]
 fn a_bad_scene_exits_non_zero_naming_the_key_and_writes_nothing() {
-    let out = temp_dir("bad");
-    let scene = temp_dir("bad-scene").with_extension("toml");
-    let text = std::fs::read_to_string("verification/cases/column/column-merged.toml")
-        .unwrap()
-        .replace("poisson_ratio = 0.3", "poisson_ratio = 0.6");
-    std::fs::write(&scene, text).unwrap();
-    let o = Command::new(env!("CARGO_BIN_EXE_cdem"))
-        .args(["run", scene.to_str().unwrap(), "--out", out.to_str().unwrap()])
-        .output()
-        .unwrap();
+    let (scene, out) = edited_column("bad", |t| t.replace("poisson_ratio = 0.3", "poisson_ratio = 0.6"));
+    let o = cdem_run(&scene, &out);
     assert_eq!(o.status.code(), Some(2), "invalid input");
     let msg = String::from_utf8_lossy(&o.stderr);
     assert!(msg.contains("material[0].poisson_ratio"), "{msg}");
