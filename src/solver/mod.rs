@@ -159,13 +159,7 @@ impl Solver {
 
     /// Kinetic energy `v . M v / 2` with the inertial masses (J).
     pub fn kinetic_energy(&mut self, state: &State) -> f64 {
-        match self.inertia.is_block() {
-            true => 0.5 * self.inertia.quadratic(&state.v),
-            false => {
-                let m = self.inertia.lumped_masses();
-                (0..state.v.len()).map(|k| 0.5 * m[k / 3] * state.v[k] * state.v[k]).sum()
-            }
-        }
+        0.5 * self.inertia.quadratic(&state.v)
     }
 
     /// Stage 1: internal forces, eq. 12 (elements) and eq. 15 (springs),
