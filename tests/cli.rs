@@ -217,3 +217,34 @@ fn an_unknown_group_lists_the_groups_there_are() {
     assert!(msg.contains("its surface groups:") && msg.contains("\"xmin\"") && msg.contains("\"bottom\""), "{msg}");
     let _ = std::fs::remove_file(&scene);
 }
+
+/// `cdem lem` on a CDEM scene: the paper slope's scene carries a `[lem]`
+/// table; the LEM of its mesh prints the paper's FS. A scene without one is
+/// invalid input (2), and `--help` describes both formats.
+#[test]
+fn lem_runs_on_a_scene_and_refuses_one_without_a_lem_table() {
+    let out = temp_dir("lem-scene").join("lem.json");
+    let o = Command::new(env!("CARGO_BIN_EXE_cdem"))
+        .args(["lem", "verification/cases/slope/slope.toml", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(text.lines().any(|l| l.starts_with("bishop     1.0888")), "{text}");
+    assert!(out.exists());
+
+    let o = Command::new(env!("CARGO_BIN_EXE_cdem"))
+        .args(["lem", "verification/cases/column/column.toml"])
+        .output()
+        .unwrap();
+    let msg = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{msg}");
+    assert!(msg.contains("`lem`") && msg.contains("[lem] table"), "{msg}");
+
+    let o = Command::new(env!("CARGO_BIN_EXE_cdem")).args(["lem", "--help"]).output().unwrap();
+    let help = String::from_utf8_lossy(&o.stdout);
+    for key in ["[lem]", "[[lem.material]]", "[section]", "ground_group", "z_min", "Exit codes"] {
+        assert!(help.contains(key), "--help lacks {key}: {help}");
+    }
+}

@@ -351,3 +351,41 @@ fn an_inadmissible_given_circle_is_an_error_not_a_panic() {
     let err = analyse(&parse(&text).unwrap()).unwrap_err().to_string();
     assert!(err.contains("circle"), "{err}");
 }
+
+/// A base at the toe's level (no foundation layer, the textbook case): a
+/// purely cohesive 60 deg slope of height H whose critical circle is a toe
+/// circle, so Taylor's chart applies: F = c / (N gamma H), N = 0.191.
+#[test]
+fn a_base_at_toe_level_is_allowed_and_matches_taylors_chart() {
+    let (h, c, gamma) = (10.0, 20e3, 20e3);
+    let dx = h / 60f64.to_radians().tan();
+    let text = format!(
+        "[section]\nground = [[0.0, 0.0], [20.0, 0.0], [{}, {h}], [60.0, {h}]]\nz_min = 0.0\n\
+         [[material]]\ncohesion = {c}\nfriction_angle = 0.0\nunit_weight = {gamma}\n[analysis]\nslices = 100\n",
+        20.0 + dx
+    );
+    let r = analyse(&parse(&text).unwrap()).unwrap();
+    let b = critical(&r, Method::Bishop);
+    let expected = c / (reg::TAYLOR_N_60.value * gamma * h);
+    println!("Taylor 60 deg: Bishop {:.4}, chart {expected:.4}, circle ({:.3}, {:.3}, {:.3})", b.fs, b.xc, b.zc, b.r);
+    cdem::harness::report::record(
+        "lem_taylor_toe_level",
+        &[cdem::harness::report::Check::new(
+            "Taylor 60 deg, base at toe level",
+            "Bishop FS",
+            b.fs,
+            expected,
+            reg::TOL_TAYLOR,
+            reg::TAYLOR_N_60.source,
+            r.wall_s,
+        )],
+    );
+    assert!((b.fs - expected).abs() <= reg::TOL_TAYLOR * expected, "Bishop {} against Taylor {expected}", b.fs);
+    // The search's admissibility tolerance: 1e-9 (1 + r + |zc|).
+    assert!(b.zc - b.r >= -1e-9 * (1.0 + b.r + b.zc.abs()), "the circle passes {} m below the base", b.r - b.zc);
+    // The level z_min may equal the lowest ground point, not lie above it.
+    let above = text.replace("z_min = 0.0", "z_min = 0.5");
+    assert!(
+        matches!(parse(&above), Err(cdem::Error::Scene(cdem::error::SceneError::Invalid { ref key, .. })) if key == "section.z_min")
+    );
+}

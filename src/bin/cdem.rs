@@ -43,6 +43,7 @@ enum Command {
         out: PathBuf,
     },
     /// Limit-equilibrium slope stability (2D circular search): print a table, write JSON.
+    #[command(long_about = LEM_HELP)]
     Lem {
         input: PathBuf,
         /// Output JSON (default: the input's path with extension .json).
@@ -194,11 +195,55 @@ fn fem(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
     Ok(if s.converged { Outcome::Reached } else { Outcome::OutOfSteps })
 }
 
+const LEM_HELP: &str = "Limit-equilibrium slope stability: ordinary, Bishop simplified and Spencer on circular
+slip surfaces (a search, or one given circle). Prints a table, writes JSON.
+
+INPUT is either a LEM file or a CDEM scene with a [lem] table (units m, Pa, deg, N/m^3).
+
+A CDEM scene (a file with [mesh]): the section is the mesh cut by the plane y = y_plane
+(an outer face; default the lowest y), its ground the top of that section (or the nodes
+of a surface group), its zones the volume groups met by it:
+  [lem]
+  ground_group = \"ground\"   # optional
+  y_plane = 0.0               # optional
+  z_min = 0.0                 # optional: no circle below (default the lowest node; the toe's level allowed)
+  facing = \"left\"           # optional: detected from the ground (crest at the higher end)
+  slices = 50                 # optional; methods = [\"ordinary\", \"bishop\", \"spencer\"]
+  [[lem.material]]            # one per volume group met by the section
+  group = \"rock\"
+  cohesion = 16.0e3           # c' (Pa)
+  friction_angle = 18.0       # phi' (deg)
+  unit_weight = 20.6e3        # optional: the group's density x |gravity|
+  # [lem.circle] xc, zc, r    or [lem.search] as below
+
+A LEM file:
+  [section]
+  ground = [[20.0, 25.0], [30.0, 25.0], [50.0, 35.0], [70.0, 35.0]]   # (x, z), x increasing
+  # or from_mesh = \"slope.msh\", ground_group = \"ground\", y_plane = 0.0
+  z_min = 20.0                # or lower_bound = [[x, z], ...]; may equal the lowest ground point
+  facing = \"left\"           # optional: \"left\" (sliding toward -x) or \"right\"
+  [[material]]                # without zone: the whole section (at most one)
+  cohesion = 3.0e3
+  friction_angle = 19.6
+  unit_weight = 20.0e3
+  # zone = [[x, z], ...]      # a polygon; the first zone containing a point wins
+  [analysis]
+  slices = 50
+  methods = [\"ordinary\", \"bishop\", \"spencer\"]
+  [search]                    # optional: [search.grid] nx, nz, radii, x, z; [search.entry_exit]
+  refine = true               #   n_exit, n_entry, radii, exit, entry; min_depth, min_width (m)
+  # [circle] xc, zc, r        # one circle instead of a search
+
+Exit codes: 0 done, 1 failed, 2 invalid input (the message names the key).";
+
 /// `cdem lem`: runs a LEM input, prints a short table and writes the JSON
 /// (to `out`, or beside the input with extension `.json`).
 fn lem(input: &Path, out: Option<&Path>) -> cdem::Result<()> {
-    let result = cdem::lem::analyse(&cdem::lem::LemInput::load(input)?)?;
+    let result = cdem::lem::analyse(&cdem::drivers::load_lem_input(input)?)?;
     let out = out.map(Path::to_path_buf).unwrap_or_else(|| input.with_extension("json"));
+    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).map_err(|e| cdem::Error::io(dir, e))?;
+    }
     cdem::output::write_json(&out, &result)?;
     // A closed stdout (e.g. `| head`) is not an error of the analysis.
     let _ = writeln!(std::io::stdout().lock(), "{}wrote {}", cdem::lem::table(&result), out.display());

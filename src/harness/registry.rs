@@ -271,6 +271,13 @@ pub const ACADS_SLIDE_SPENCER: Reference = Reference {
     source: LEM_MD,
     what: "ACADS 1(a), Spencer in Rocscience Slide (verification manual, problem 1)",
 };
+/// Taylor's stability number `N = c / (F gamma H)` of a purely cohesive slope
+/// of 60 deg (its critical circle a toe circle), read from his chart.
+pub const TAYLOR_N_60: Reference = Reference {
+    value: 0.191,
+    source: LEM_MD,
+    what: "Taylor (1937) stability number, phi = 0, beta = 60 deg (toe circle)",
+};
 
 // ---------------------------------------------------------------------------
 // Tolerances a test and `cdem reproduce` both apply.
@@ -286,6 +293,8 @@ pub const TOL_ACADS: f64 = 0.015;
 /// The paper slope's Bishop FS against the paper's LEM: 0.01 absolute
 /// (references/lem.md); relative in a validation row: `0.01 / 1.084`.
 pub const TOL_PAPER_LEM_FS_ABSOLUTE: f64 = 0.01;
+/// Our Bishop FS against Taylor's chart: 1 % (three-digit chart value, references/lem.md).
+pub const TOL_TAYLOR: f64 = 0.01;
 /// Eq. 21 from the CDEM springs against the LEM on the slip circle: 2 %.
 pub const TOL_EQ21_VS_LEM: f64 = 0.02;
 

@@ -373,13 +373,17 @@ fn column_weight(f: &Frame, c: Circle, x: f64, zs: &mut Vec<f64>) -> Option<f64>
     }
     zs.clear();
     zs.push(z0);
+    // Zone edges along the ground or the arc (a mesh's zones share the
+    // ground's vertices) cross within rounding of z1 or z0: such a crossing
+    // would leave a sliver of air or of nothing between it and the end.
+    let eps = 1e-9 * f.height();
     for (poly, _) in &f.zones {
         let n = poly.len();
         for i in 0..n {
             let (a, b) = (poly[i], poly[(i + 1) % n]);
             if (a[0] <= x) != (b[0] <= x) {
                 let z = a[1] + (b[1] - a[1]) * (x - a[0]) / (b[0] - a[0]);
-                if z > z0 && z < z1 {
+                if z > z0 + eps && z < z1 - eps {
                     zs.push(z);
                 }
             }

@@ -197,7 +197,7 @@ impl Default for AnalysisToml {
     }
 }
 
-#[derive(Deserialize)]
+#[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct SearchToml {
     grid: Option<GridToml>,
@@ -210,7 +210,7 @@ struct SearchToml {
     parallel: bool,
 }
 
-#[derive(Deserialize)]
+#[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct GridToml {
     #[serde(default = "yes")]
@@ -225,7 +225,7 @@ struct GridToml {
     radii: usize,
 }
 
-#[derive(Deserialize)]
+#[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct EntryExitToml {
     #[serde(default = "yes")]
@@ -240,7 +240,7 @@ struct EntryExitToml {
     radii: usize,
 }
 
-#[derive(Deserialize)]
+#[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct CircleToml {
     xc: f64,
@@ -345,27 +345,8 @@ impl LemInput {
         }
         let section = LemSection::new(ground, lower, background, zones, s.facing)?;
 
-        let a = file.analysis;
-        check_count("analysis.slices", a.slices, 3, 10_000)?;
-        if a.methods.is_empty() {
-            return Err(SceneError::invalid("analysis.methods", "must name at least one method").into());
-        }
-        let mut methods: Vec<Method> = Method::ALL.into_iter().filter(|m| a.methods.contains(m)).collect();
-        methods.dedup();
-
-        let mode = match (file.circle, file.search) {
-            (Some(_), Some(_)) => {
-                return Err(SceneError::invalid("circle", "give either [circle] or [search], not both").into())
-            }
-            (Some(c), None) => {
-                if !(c.xc.is_finite() && c.zc.is_finite() && c.r.is_finite() && c.r > 0.0) {
-                    return Err(SceneError::invalid("circle", "xc, zc must be finite and r > 0").into());
-                }
-                Mode::Circle(Circle { xc: c.xc, zc: c.zc, r: c.r })
-            }
-            (None, search) => Mode::Search(search_spec(search)?),
-        };
-        Ok(LemInput { section, slices: a.slices, methods, mode })
+        let (slices, methods, mode) = analysis_and_mode(file.analysis, file.circle, file.search)?;
+        Ok(LemInput { section, slices, methods, mode })
     }
 
     /// Reads and validates a LEM TOML file.
@@ -373,6 +354,31 @@ impl LemInput {
         let text = std::fs::read_to_string(path).map_err(|e| crate::Error::io(path, e))?;
         Self::from_toml(&text, path.parent().unwrap_or(Path::new(".")), path)
     }
+}
+
+/// `[analysis]`, `[circle]` and `[search]`, checked (keys as in a LEM file).
+fn analysis_and_mode(
+    a: AnalysisToml,
+    circle: Option<CircleToml>,
+    search: Option<SearchToml>,
+) -> Result<(usize, Vec<Method>, Mode), SceneError> {
+    check_count("analysis.slices", a.slices, 3, 10_000)?;
+    if a.methods.is_empty() {
+        return Err(SceneError::invalid("analysis.methods", "must name at least one method"));
+    }
+    let mut methods: Vec<Method> = Method::ALL.into_iter().filter(|m| a.methods.contains(m)).collect();
+    methods.dedup();
+    let mode = match (circle, search) {
+        (Some(_), Some(_)) => return Err(SceneError::invalid("circle", "give either [circle] or [search], not both")),
+        (Some(c), None) => {
+            if !(c.xc.is_finite() && c.zc.is_finite() && c.r.is_finite() && c.r > 0.0) {
+                return Err(SceneError::invalid("circle", "xc, zc must be finite and r > 0"));
+            }
+            Mode::Circle(Circle { xc: c.xc, zc: c.zc, r: c.r })
+        }
+        (None, search) => Mode::Search(search_spec(search)?),
+    };
+    Ok((a.slices, methods, mode))
 }
 
 fn search_spec(t: Option<SearchToml>) -> Result<SearchSpec, SceneError> {
@@ -417,4 +423,139 @@ fn search_spec(t: Option<SearchToml>) -> Result<SearchSpec, SceneError> {
         min_width: t.min_width,
         parallel: t.parallel,
     })
+}
+
+/// Scene table `[lem]`: the limit-equilibrium analysis of a CDEM scene's own
+/// mesh, so that `cdem lem SCENE.toml` needs no second input file.
+///
+/// ```toml
+/// [lem]
+/// ground_group = "ground"    # optional: the mesh's ground surface group (default: the section's top)
+/// y_plane = 0.0              # optional: the section plane, an outer face of the mesh (default: lowest y)
+/// z_min = 0.0                # optional: no slip circle below (default: the lowest node; the toe's level is allowed)
+/// facing = "left"            # optional: detected from the ground's ends
+/// slices = 50                # optional (default DEFAULT_SLICES)
+/// methods = ["bishop"]       # optional (default all)
+/// [[lem.material]]           # one per volume group met by the section
+/// group = "rock"
+/// cohesion = 16.0e3          # c' (Pa)
+/// friction_angle = 18.0      # phi' (deg)
+/// unit_weight = 20.6e3       # optional: default the group's density x |gravity|
+/// # [lem.circle] xc, zc, r   # one circle instead of a search
+/// # [lem.search] ...         # as [search] of a LEM file
+/// ```
+///
+/// The zones are the volume groups' outlines on the section plane
+/// ([`super::section::cut_mesh`]); one group, or groups of one
+/// strength, make a homogeneous section.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneLem {
+    ground_group: Option<String>,
+    y_plane: Option<f64>,
+    z_min: Option<f64>,
+    facing: Option<Facing>,
+    #[serde(default = "default_slices")]
+    slices: usize,
+    #[serde(default = "all_methods")]
+    methods: Vec<Method>,
+    #[serde(default)]
+    material: Vec<SceneLemMaterial>,
+    search: Option<SearchToml>,
+    circle: Option<CircleToml>,
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneLemMaterial {
+    group: String,
+    cohesion: f64,
+    friction_angle: f64,
+    unit_weight: Option<f64>,
+}
+
+/// A LEM file's key as it is spelled inside a scene's `[lem]` table.
+fn in_scene(e: SceneError) -> SceneError {
+    match e {
+        SceneError::Invalid { key, reason } => {
+            let key = key.strip_prefix("analysis.").unwrap_or(&key);
+            let key = key.strip_prefix("section.").unwrap_or(key);
+            SceneError::Invalid { key: format!("lem.{key}"), reason }
+        }
+        other => other,
+    }
+}
+
+impl LemInput {
+    /// The LEM of a scene's mesh: `lem` is the scene's `[lem]` table,
+    /// `unit_weight_of(group)` the weight per volume (N/m^3) of a volume
+    /// group from the scene's own materials and gravity, if it has one.
+    pub fn from_scene(
+        lem: &SceneLem,
+        mesh: &crate::mesh::Mesh,
+        unit_weight_of: &dyn Fn(&str) -> Option<f64>,
+    ) -> crate::Result<Self> {
+        let y_plane = lem.y_plane.unwrap_or_else(|| mesh.nodes.iter().map(|p| p[1]).fold(f64::INFINITY, f64::min));
+        let cut = super::section::cut_mesh(mesh, y_plane)?;
+        let (ground, mesh_z_min) = match &lem.ground_group {
+            Some(group) => LemSection::from_mesh(mesh, group, Some(y_plane)).map_err(in_scene)?,
+            None => (cut.ground()?, mesh.nodes.iter().map(|p| p[2]).fold(f64::INFINITY, f64::min)),
+        };
+        let lower = LowerBound::Level(lem.z_min.unwrap_or(mesh_z_min));
+        let outlines = cut.zones;
+        let mut materials = Vec::with_capacity(outlines.len());
+        for (group, loops) in &outlines {
+            let Some(i) = lem.material.iter().position(|m| &m.group == group) else {
+                let given: Vec<&str> = lem.material.iter().map(|m| m.group.as_str()).collect();
+                return Err(SceneError::invalid(
+                    "lem.material",
+                    format!("volume group {group:?} meets the section but has no [[lem.material]] (given: {given:?})"),
+                )
+                .into());
+            };
+            let m = &lem.material[i];
+            let unit_weight = match m.unit_weight.or_else(|| unit_weight_of(group)) {
+                Some(w) => w,
+                None => {
+                    return Err(SceneError::invalid(
+                        format!("lem.material[{i}].unit_weight"),
+                        format!("missing, and volume group {group:?} has no [[material]] density to take it from"),
+                    )
+                    .into())
+                }
+            };
+            let material = Material { cohesion: m.cohesion, friction_angle: m.friction_angle, unit_weight };
+            super::section::check_material(&format!("lem.material[{i}]"), &material)?;
+            materials.push((material, loops));
+        }
+        for (i, m) in lem.material.iter().enumerate() {
+            if !outlines.iter().any(|(g, _)| g == &m.group) {
+                let groups: Vec<&str> = outlines.iter().map(|(g, _)| g.as_str()).collect();
+                return Err(SceneError::invalid(
+                    format!("lem.material[{i}].group"),
+                    format!("{:?} is not a volume group met by the section (those are: {groups:?})", m.group),
+                )
+                .into());
+            }
+        }
+        let homogeneous = materials.windows(2).all(|w| w[0].0 == w[1].0);
+        let (background, zones) = if homogeneous {
+            (Some(materials[0].0), Vec::new())
+        } else {
+            let mut zones: Vec<Zone> = materials
+                .iter()
+                .flat_map(|(m, loops)| loops.iter().map(|p| Zone { polygon: p.clone(), material: *m }))
+                .collect();
+            // Smaller first: a zone inside another's hole wins there.
+            zones.sort_by(|a, b| {
+                super::section::signed_area(&a.polygon).total_cmp(&super::section::signed_area(&b.polygon))
+            });
+            (None, zones)
+        };
+        let section = LemSection::new(ground, lower, background, zones, lem.facing).map_err(in_scene)?;
+        let analysis = AnalysisToml { slices: lem.slices, methods: lem.methods.clone() };
+        let (slices, methods, mode) =
+            analysis_and_mode(analysis, lem.circle.clone(), lem.search.clone()).map_err(in_scene)?;
+        Ok(LemInput { section, slices, methods, mode })
+    }
 }

@@ -60,9 +60,9 @@ use serde::Serialize;
 use crate::error::SceneError;
 
 pub use geometry::{slices_of, Reject, SliceInfo};
-pub use input::{EntryExitSpec, GridSpec, LemInput, Mode, SearchSpec};
+pub use input::{EntryExitSpec, GridSpec, LemInput, Mode, SceneLem, SearchSpec};
 pub use methods::{evaluate_circle, CircleFs};
-pub use section::{Facing, LemSection, LowerBound, Material, Zone};
+pub use section::{cut_mesh, Facing, LemSection, LowerBound, Material, SectionCut, Zone};
 
 /// Default number of slices. On a circle near the ACADS 1(a) critical one,
 /// every method's FS at 50 slices is within 1e-4 of its value at 400, and the

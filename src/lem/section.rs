@@ -207,10 +207,10 @@ impl LemSection {
         match &lower_bound {
             LowerBound::Level(z) => {
                 let zg = ground.iter().map(|p| p[1]).fold(f64::INFINITY, f64::min);
-                if !z.is_finite() || *z >= zg {
+                if !z.is_finite() || *z > zg {
                     return Err(SceneError::invalid(
                         "section.z_min",
-                        format!("must be finite and below the lowest ground point (z = {zg})"),
+                        format!("must be finite and at or below the lowest ground point (z = {zg}; at it: a base at toe level)"),
                     ));
                 }
             }
@@ -362,4 +362,163 @@ fn toe_and_crest(g: &[[f64; 2]]) -> ([f64; 2], [f64; 2]) {
     let k = g.iter().position(|p| p[1] >= zhi - tol).unwrap_or(g.len() - 1);
     let t = g[..=k].iter().rposition(|p| p[1] <= zlo + tol).unwrap_or(0);
     (g[t], g[k])
+}
+
+/// The material zones of a 3D mesh on a section plane `y = y_plane`: for every
+/// volume group with element faces on the mesh's outer surface in that plane,
+/// the outer boundary loops of those faces, as polygons in `(x, z)`.
+///
+/// Each face is oriented counter-clockwise in `(x, z)`; the edges of a group
+/// that no other face of the same group runs back along form its boundary;
+/// chained, they give counter-clockwise outer loops and clockwise holes.
+/// Holes are dropped: the group filling a hole has its own loop there, and
+/// the caller lists smaller zones first so that the inner one wins
+/// ([`Frame::strength_at`] takes the first zone containing a point).
+/// Groups are returned in the mesh's group order with their loops, and the
+/// outline of the whole section beside them.
+pub fn cut_mesh(mesh: &Mesh, y_plane: f64) -> Result<SectionCut, SceneError> {
+    use std::collections::BTreeMap;
+    let adjacency = crate::mesh::adjacency::FaceAdjacency::build(mesh)
+        .map_err(|e| SceneError::invalid("lem.y_plane", format!("the mesh's faces: {e}")))?;
+    let extent = mesh.nodes.iter().fold([f64::INFINITY, f64::NEG_INFINITY], |a, p| [a[0].min(p[1]), a[1].max(p[1])]);
+    let size = mesh.nodes.iter().fold(0.0f64, |s, p| s.max(p[0].abs()).max(p[1].abs()).max(p[2].abs())).max(1.0);
+    let tol = 1e-9 * size;
+    if !(y_plane >= extent[0] - tol && y_plane <= extent[1] + tol) {
+        return Err(SceneError::invalid(
+            "lem.y_plane",
+            format!("y = {y_plane} is outside the mesh (y from {} to {})", extent[0], extent[1]),
+        ));
+    }
+    let mut group_of = vec![usize::MAX; mesh.cells.len()];
+    for (gi, g) in mesh.groups.iter().enumerate().filter(|(_, g)| g.dim == 3) {
+        for &c in &g.cells {
+            group_of[c] = gi;
+        }
+    }
+    // Directed boundary-candidate edges per group, from the faces in the plane.
+    let mut edges: BTreeMap<usize, BTreeMap<(usize, usize), usize>> = BTreeMap::new();
+    for &(c, f) in &adjacency.exterior {
+        let nodes = crate::mesh::adjacency::face_nodes(mesh, c, f);
+        if !nodes.iter().all(|&n| (mesh.nodes[n][1] - y_plane).abs() <= tol) || group_of[c] == usize::MAX {
+            continue;
+        }
+        let xz: Vec<[f64; 2]> = nodes.iter().map(|&n| [mesh.nodes[n][0], mesh.nodes[n][2]]).collect();
+        let ccw = signed_area(&xz) > 0.0;
+        let e = edges.entry(group_of[c]).or_default();
+        for i in 0..nodes.len() {
+            let (a, b) = (nodes[i], nodes[(i + 1) % nodes.len()]);
+            let (a, b) = if ccw { (a, b) } else { (b, a) };
+            *e.entry((a, b)).or_default() += 1;
+        }
+    }
+    if edges.is_empty() {
+        return Err(SceneError::invalid(
+            "lem.y_plane",
+            format!("no element face lies in the plane y = {y_plane}: the section must be an outer face of the mesh"),
+        ));
+    }
+    let mut out = Vec::new();
+    for (gi, e) in &edges {
+        let name = &mesh.groups[*gi].name;
+        out.push((name.clone(), outer_loops(mesh, e).map_err(|()| not_closed(name))?));
+    }
+    let mut all: BTreeMap<(usize, usize), usize> = BTreeMap::new();
+    for e in edges.values() {
+        for (&k, &n) in e {
+            *all.entry(k).or_default() += n;
+        }
+    }
+    let outline = outer_loops(mesh, &all).map_err(|()| not_closed("(all)"))?;
+    Ok(SectionCut { zones: out, outline })
+}
+
+fn not_closed(group: &str) -> SceneError {
+    SceneError::invalid("lem.y_plane", format!("the faces of volume group {group:?} in the section do not close"))
+}
+
+/// The counter-clockwise boundary loops of a set of directed face edges.
+fn outer_loops(mesh: &Mesh, e: &std::collections::BTreeMap<(usize, usize), usize>) -> Result<Vec<Vec<[f64; 2]>>, ()> {
+    let mut next: std::collections::BTreeMap<usize, Vec<usize>> = Default::default();
+    for (&(a, b), _) in e.iter().filter(|((a, b), _)| !e.contains_key(&(*b, *a))) {
+        next.entry(a).or_default().push(b);
+    }
+    let mut loops = Vec::new();
+    while let Some((&start, _)) = next.iter().find(|(_, v)| !v.is_empty()) {
+        let mut ring = vec![start];
+        let mut at = start;
+        loop {
+            let b = next.get_mut(&at).and_then(Vec::pop).ok_or(())?;
+            if b == start {
+                break;
+            }
+            ring.push(b);
+            at = b;
+        }
+        let poly: Vec<[f64; 2]> = ring.iter().map(|&n| [mesh.nodes[n][0], mesh.nodes[n][2]]).collect();
+        if signed_area(&poly) > 0.0 {
+            loops.push(poly);
+        }
+    }
+    Ok(loops)
+}
+
+/// A mesh cut by a section plane.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SectionCut {
+    /// Per volume group met by the plane (mesh order): its outer loops.
+    pub zones: Vec<(String, Vec<Vec<[f64; 2]>>)>,
+    /// The outer loops of the whole section.
+    pub outline: Vec<Vec<[f64; 2]>>,
+}
+
+impl SectionCut {
+    /// The ground: the top of the section's outline, from its leftmost to its
+    /// rightmost point (the highest of each where several share an x).
+    /// Vertical runs keep their upper end. Err when the section is not one piece.
+    pub fn ground(&self) -> Result<Vec<[f64; 2]>, SceneError> {
+        let [ring] = self.outline.as_slice() else {
+            return Err(SceneError::invalid(
+                "lem.ground_group",
+                format!("the section has {} separate pieces: name the ground's surface group", self.outline.len()),
+            ));
+        };
+        let key = |p: &[f64; 2]| (p[0], p[1]);
+        let pick = |better: &dyn Fn(&[f64; 2], &[f64; 2]) -> bool| {
+            (0..ring.len()).fold(0, |b, i| if better(&ring[i], &ring[b]) { i } else { b })
+        };
+        let left = pick(&|p, q| key(p).0 < key(q).0 || (p[0] == q[0] && p[1] > q[1]));
+        let right = pick(&|p, q| key(p).0 > key(q).0 || (p[0] == q[0] && p[1] > q[1]));
+        // Counter-clockwise, the top runs from the right end to the left end.
+        let mut top = Vec::new();
+        let mut i = right;
+        loop {
+            top.push(ring[i]);
+            if i == left {
+                break;
+            }
+            i = (i + 1) % ring.len();
+        }
+        top.reverse();
+        let size = (ring[right][0] - ring[left][0]).abs().max(1.0);
+        let mut ground: Vec<[f64; 2]> = Vec::with_capacity(top.len());
+        for p in top {
+            match ground.last_mut() {
+                Some(q) if (p[0] - q[0]).abs() <= 1e-9 * size => q[1] = q[1].max(p[1]),
+                Some(q) if p[0] < q[0] => {
+                    return Err(SceneError::invalid(
+                        "lem.ground_group",
+                        format!("the top of the section overhangs at x = {}: name the ground's surface group", p[0]),
+                    ))
+                }
+                _ => ground.push(p),
+            }
+        }
+        Ok(ground)
+    }
+}
+
+/// Signed area of a polygon in the plane (positive: counter-clockwise).
+pub(crate) fn signed_area(p: &[[f64; 2]]) -> f64 {
+    let n = p.len();
+    0.5 * (0..n).map(|i| p[i][0] * p[(i + 1) % n][1] - p[(i + 1) % n][0] * p[i][1]).sum::<f64>()
 }

@@ -41,6 +41,13 @@
 //!
 //! [output]
 //! vtk = true
+//!
+//! [lem]                          # optional: `cdem lem` on this scene (see lem::SceneLem)
+//! ground_group = "ground"
+//! [[lem.material]]
+//! group = "rock"
+//! cohesion = 16e3
+//! friction_angle = 18.0          # unit_weight defaults to density x |gravity|
 //! ```
 
 mod validate;
@@ -76,6 +83,8 @@ pub struct Scene {
     pub output: Output,
     /// Phase 2 (progressive failure), if present.
     pub failure: Option<FailureParams>,
+    /// The limit-equilibrium analysis of this mesh (`cdem lem SCENE.toml`), if present.
+    pub lem: Option<crate::lem::SceneLem>,
     /// Directory of the scene file: relative paths are resolved against it.
     #[serde(skip)]
     pub base_dir: PathBuf,

@@ -1,0 +1,38 @@
+//! The LEM of a file: either a LEM input or a CDEM scene with a `[lem]` table,
+//! whose section, zones and unit weights come from the scene's own mesh and
+//! materials (docs/method.md, section 5).
+
+use std::path::Path;
+
+use crate::error::SceneError;
+use crate::lem::LemInput;
+use crate::scene::Scene;
+
+/// The LEM input of the scene's `[lem]` table.
+pub fn scene_lem_input(scene: &Scene) -> crate::Result<LemInput> {
+    let Some(lem) = &scene.lem else {
+        return Err(SceneError::invalid(
+            "lem",
+            "missing: `cdem lem` on a scene needs a [lem] table (ground_group and [[lem.material]])",
+        )
+        .into());
+    };
+    let mesh = super::read_mesh(scene)?;
+    let g = scene.loads.gravity;
+    let gravity = (g[0] * g[0] + g[1] * g[1] + g[2] * g[2]).sqrt();
+    let unit_weight_of = |group: &str| {
+        scene.material.iter().find(|m| m.group == group).map(|m| m.density * gravity).filter(|w| *w > 0.0)
+    };
+    LemInput::from_scene(lem, &mesh, &unit_weight_of)
+}
+
+/// A LEM input file, or a scene (a TOML file with a `[mesh]` table).
+pub fn load_lem_input(path: &Path) -> crate::Result<LemInput> {
+    let text = std::fs::read_to_string(path).map_err(|e| crate::Error::io(path, e))?;
+    let is_scene = text.parse::<toml::Table>().is_ok_and(|t| t.contains_key("mesh"));
+    if is_scene {
+        scene_lem_input(&Scene::from_toml(&text, path.parent().unwrap_or(Path::new(".")), path)?)
+    } else {
+        LemInput::from_toml(&text, path.parent().unwrap_or(Path::new(".")), path)
+    }
+}
