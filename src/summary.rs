@@ -7,10 +7,10 @@
 //! `end_state`, `converged`, `steps` (both phases), `unbalanced_ratio` and
 //! field extremes describe the end of the whole run.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// How a run (or one phase of it) ended.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub enum EndState {
     /// Converged: the unbalanced-force ratio fell below the tolerance.
     Equilibrium,

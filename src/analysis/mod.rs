@@ -5,5 +5,6 @@
 pub mod compare;
 pub mod safety;
 pub mod slip;
+pub mod stats;
 
 pub use safety::{safety_factors, sign_segments, traction_from_stress, SafetyFactors, Segment, SurfacePoint};

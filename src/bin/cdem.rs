@@ -4,7 +4,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand};
+use clap::{Args, Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 
 use cdem::scene::Scene;
@@ -50,6 +50,10 @@ enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
     },
+    /// Monte-Carlo ensemble over the random structural planes and random strengths:
+    /// DIR/members.jsonl, ensemble.json, ensemble.md, fs-histogram.png, convergence.png.
+    #[command(long_about = ENSEMBLE_HELP)]
+    Ensemble(EnsembleArgs),
     /// Error against run time for CDEM and FEM (column, slope): DIR/study.csv and figures.
     Study {
         #[arg(long, default_value = "study")]
@@ -92,6 +96,76 @@ const EXIT_CODES: &str = "Exit codes:
   2  invalid input: the scene, the mesh, or what the model makes of them (the message names the place)
   3  the step budget ran out: outputs are written, summary.json says end_state \"Undecided\"";
 
+#[derive(Args)]
+#[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
+struct EnsembleArgs {
+    #[command(subcommand)]
+    merge: Option<EnsembleCommand>,
+    /// A scene (with [perturbation], [[ensemble.random]] or [lem]) or a LEM file with [ensemble].
+    #[arg(required = true)]
+    input: Option<PathBuf>,
+    /// Members (default: [ensemble] members, else 100).
+    #[arg(long)]
+    members: Option<usize>,
+    #[arg(long, default_value = "out-ensemble")]
+    out: PathBuf,
+    /// Base seed BASE (default: [ensemble] seed, else 1).
+    #[arg(long)]
+    seed: Option<u64>,
+    /// Run shard I of N (0-based): members [I M / N, (I + 1) M / N); merge the shards after.
+    #[arg(long, value_parser = parse_shard)]
+    shard: Option<(usize, usize)>,
+}
+
+#[derive(Subcommand)]
+enum EnsembleCommand {
+    /// Merge shard directories into one ensemble (checks that every member is there once).
+    Merge {
+        #[arg(required = true)]
+        dirs: Vec<PathBuf>,
+        #[arg(long, default_value = "out-ensemble")]
+        out: PathBuf,
+    },
+}
+
+fn parse_shard(s: &str) -> Result<(usize, usize), String> {
+    let (i, n) = s.split_once('/').ok_or("expected I/N, e.g. 0/4")?;
+    let i = i.parse().map_err(|_| format!("shard index {i:?} is not a number"))?;
+    let n = n.parse().map_err(|_| format!("shard count {n:?} is not a number"))?;
+    Ok((i, n))
+}
+
+const ENSEMBLE_HELP: &str = "Monte-Carlo ensemble over the stochastic structural planes (the node perturbation's
+seed) and, optionally, random strengths, as Slide's probabilistic analysis.
+
+Member k of base seed BASE is INPUT with perturbation.seed = splitmix64_(k+1)(BASE) >> 1
+(the (k+1)-th output of a SplitMix64 stream started at BASE) and each [[ensemble.random]]
+number drawn from its own stream. A member depends on (INPUT, BASE, k) only: records are
+byte-identical whatever --shard and the thread count.
+
+  [ensemble]
+  members = 200                 # default of --members
+  seed = 1                      # default of --seed
+  analyses = [\"cdem\", \"lem\"]    # default: cdem for a scene (+ lem with [lem]); lem for a LEM file
+  lem_surface = \"critical\"      # LEM on the mean critical circle, or \"search\" per member
+  [[ensemble.random]]
+  key = \"lem.material[0].cohesion\"  # any number of the file, by its key
+  distribution = \"normal\"       # or \"lognormal\"
+  mean = 16e3                   # default: the file's value
+  std_dev = 2e3
+  min = 0.0                     # optional truncation (redrawn)
+
+Per member (members.jsonl, one JSON line): seed, draws, the LEM FS (Bishop), the CDEM
+elastic max |u|, phase-2 end state, failed springs and where failure started. The whole
+ensemble (ensemble.json, ensemble.md): mean, standard deviation, percentiles, PF = P(FS < 1)
+with its 95 % Wilson interval, reliability index (normal and lognormal), convergence
+with the member count; fs-histogram.png and convergence.png.
+
+On a cluster: run shards as independent processes (scripts/slurm/ensemble.sbatch: a job
+array, SLURM_ARRAY_TASK_ID -> --shard I/N), then `cdem ensemble merge DIR... --out OUT`.
+
+Exit codes: 0 done, 1 failed, 2 invalid input.";
+
 /// How a command ended, for the exit code.
 enum Outcome {
     Reached,
@@ -109,6 +183,7 @@ fn main() -> ExitCode {
             reached(cdem::mesh::gmsh::regenerate(&geo, &out).map(|_| eprintln!("wrote {}", out.display())))
         }
         Command::Lem { input, out } => reached(lem(&input, out.as_deref())),
+        Command::Ensemble(args) => reached(ensemble(args)),
         Command::Study { out } => reached(
             cdem::harness::study::run_study(&out, &mut |what| eprintln!("study: {what}"))
                 .map(|rows| eprintln!("study: {} points -> {}", rows.len(), out.join("study.csv").display())),
@@ -175,6 +250,54 @@ fn run(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
         ),
     }
     Ok(if s.end_state == cdem::EndState::Undecided { Outcome::OutOfSteps } else { Outcome::Reached })
+}
+
+/// `cdem ensemble`: a shard or the whole ensemble, or `merge`.
+fn ensemble(args: EnsembleArgs) -> cdem::Result<()> {
+    use cdem::harness::ensemble as ens;
+    let summary = match (args.merge, args.input) {
+        (Some(EnsembleCommand::Merge { dirs, out }), _) => (ens::merge(&dirs, &out)?, out),
+        (None, Some(input)) => {
+            let req = ens::Request {
+                input,
+                out: args.out.clone(),
+                members: args.members,
+                seed: args.seed,
+                shard: args.shard.unwrap_or((0, 1)),
+            };
+            let pb = ProgressBar::new(0);
+            pb.set_style(
+                ProgressStyle::with_template("{spinner} member {pos}/{len} [{elapsed_precise}, {eta} left]")
+                    .expect("valid template"),
+            );
+            let outcome = ens::run(&req, &mut |done, total| {
+                pb.set_length(total as u64);
+                pb.set_position(done as u64);
+            })?;
+            pb.finish_and_clear();
+            match outcome {
+                ens::Outcome::Shard { info } => {
+                    println!(
+                        "shard {}/{}: members {}..{} of {} ({:.1} s) -> {}",
+                        info.shard[0],
+                        info.shard[1],
+                        info.first,
+                        info.end,
+                        info.members,
+                        info.wall_s,
+                        args.out.display()
+                    );
+                    return Ok(());
+                }
+                ens::Outcome::Whole { summary } => (*summary, args.out),
+            }
+        }
+        (None, None) => unreachable!("clap requires INPUT without a subcommand"),
+    };
+    let (s, out) = summary;
+    let text = cdem::output::ensemble::markdown(&s);
+    let _ = writeln!(std::io::stdout().lock(), "{text}-> {}", out.display());
+    Ok(())
 }
 
 /// `cdem fem`: the implicit FEM reference on the continuous mesh.

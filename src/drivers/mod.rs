@@ -5,8 +5,10 @@
 //! - [`run`]: the CDEM run of a scene: phase 1 (elastic) and, for a scene
 //!   with `[failure]`, phase 2 ([`failure`]: breakable joints, stages, end state);
 //! - [`fem`]: the implicit FEM reference on the scene's continuous mesh;
-//! - [`lem`]: the LEM input of a LEM file or of a scene's `[lem]` table.
+//! - [`lem`]: the LEM input of a LEM file or of a scene's `[lem]` table;
+//! - [`ensemble`]: Monte-Carlo members of a scene or LEM file, and their statistics.
 
+pub mod ensemble;
 pub mod failure;
 pub mod fem;
 pub mod lem;

@@ -8,6 +8,7 @@
 //! command-line crates). A library user takes `cdem` with
 //! `default-features = false` and gets the solver alone.
 
+pub mod ensemble;
 pub mod figures;
 pub mod perf;
 pub mod registry;

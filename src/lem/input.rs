@@ -150,6 +150,10 @@ struct FileToml {
     analysis: AnalysisToml,
     search: Option<SearchToml>,
     circle: Option<CircleToml>,
+    /// Read and checked by `cdem ensemble` (the scene's `EnsembleSpec`); the
+    /// LEM itself runs the file's own (mean) values.
+    #[allow(dead_code)]
+    ensemble: Option<toml::Table>,
 }
 
 #[derive(Deserialize)]

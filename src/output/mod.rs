@@ -6,6 +6,7 @@
 //! written into a staging directory and moved into place together
 //! ([`write_run`]), so a failed run leaves nothing half-written behind.
 
+pub mod ensemble;
 pub mod fem;
 pub mod run;
 pub mod vtk;

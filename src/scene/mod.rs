@@ -42,6 +42,12 @@
 //! [output]
 //! vtk = true
 //!
+//! [ensemble]                     # optional: `cdem ensemble` (see EnsembleSpec)
+//! members = 100
+//! [[ensemble.random]]
+//! key = "interface[0].strength.cohesion"
+//! std_dev = 2e3
+//!
 //! [lem]                          # optional: `cdem lem` on this scene (see lem::SceneLem)
 //! ground_group = "ground"
 //! [[lem.material]]
@@ -50,6 +56,7 @@
 //! friction_angle = 18.0          # unit_weight defaults to density x |gravity|
 //! ```
 
+mod ensemble;
 mod validate;
 
 use std::path::{Path, PathBuf};
@@ -61,6 +68,7 @@ pub use crate::model::spec::{
     Axis, Boundary, InterfaceSection, JointMode, Joints, MaterialSection, ModelSpec, Perturbation, StrengthSection,
 };
 use crate::solver::SolverParams;
+pub use ensemble::{Analysis, Distribution, EnsembleSpec, LemSurface, RandomVariable};
 
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -85,6 +93,8 @@ pub struct Scene {
     pub failure: Option<FailureParams>,
     /// The limit-equilibrium analysis of this mesh (`cdem lem SCENE.toml`), if present.
     pub lem: Option<crate::lem::SceneLem>,
+    /// The Monte-Carlo ensemble of this scene (`cdem ensemble`), if present.
+    pub ensemble: Option<EnsembleSpec>,
     /// Directory of the scene file: relative paths are resolved against it.
     #[serde(skip)]
     pub base_dir: PathBuf,

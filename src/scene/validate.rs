@@ -41,6 +41,9 @@ fn strength(key: &str, st: &super::StrengthSection) -> Result<(), SceneError> {
 }
 
 pub(super) fn validate(s: &Scene) -> Result<(), SceneError> {
+    if let Some(e) = &s.ensemble {
+        e.validate()?;
+    }
     let p = &s.perturbation;
     if !(p.ratio.is_finite() && (0.0..0.5).contains(&p.ratio)) {
         return Err(SceneError::invalid("perturbation.ratio", format!("must be in [0, 0.5), got {}", p.ratio)));

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# A real run of a cdem ensemble on SLURM (single node, Debian's slurm-wlm and munge),
+# compared with the same ensemble in one process. Run from the repository root as root:
+#   scripts/slurm/ensemble-demo.sh [OUTDIR]
+# Prints what references/ensemble.md records. Needs: cargo; installs slurm-wlm, munge.
+set -euo pipefail
+out=${1:-out/slurm-demo}
+here=$(cd "$(dirname "$0")" && pwd)
+"$here/single-node.sh" start >/dev/null
+cargo build --release --quiet
+export CDEM=$PWD/target/release/cdem
+rm -rf "$out"
+mkdir -p "$out"
+
+run_case() { # name input members shards
+    local name=$1 input=$2 members=$3 shards=$4 dir="$out/$1"
+    mkdir -p "$dir"
+    local t0 jid mid
+    t0=$(date +%s.%N)
+    jid=$(sbatch --parsable --chdir="$PWD" --output="$dir/slurm-%A_%a.out" --array=0-$((shards - 1)) \
+        "$here/ensemble.sbatch" "$input" "$members" "$dir" 1)
+    mid=$(sbatch --parsable --chdir="$PWD" --output="$dir/merge-%j.out" --dependency=afterok:"$jid" \
+        "$here/merge.sbatch" "$dir")
+    while squeue -h -j "$jid,$mid" 2>/dev/null | grep -q .; do sleep 1; done
+    local t1
+    t1=$(date +%s.%N)
+    local state
+    state=$(scontrol show job "$mid" 2>/dev/null | grep -o 'JobState=[A-Z]*' || echo "JobState=(gone)")
+    "$CDEM" ensemble "$input" --members "$members" --seed 1 --out "$dir/single" >/dev/null
+    local t2
+    t2=$(date +%s.%N)
+    if cmp -s "$dir/merged/members.jsonl" "$dir/single/members.jsonl"; then same=identical; else same=DIFFER; fi
+    printf '%s: %s, %d members, %d array tasks (job %s) + merge (job %s, %s): %.1f s; one process: %.1f s; members.jsonl %s (%s bytes)\n' \
+        "$name" "$input" "$members" "$shards" "$jid" "$mid" "$state" "$(echo "$t1 - $t0" | bc)" \
+        "$(echo "$t2 - $t1" | bc)" "$same" "$(wc -c <"$dir/single/members.jsonl")"
+    grep -E "mean FS|probability of failure" "$dir/merged/ensemble.md" || true
+    [ "$same" = identical ]
+}
+
+echo "slurm: $(sinfo --version), node $(hostname -s) with $(nproc) CPUs"
+run_case lem verification/ensemble/paper-slope-lem.toml 2000 4
+run_case cdem verification/cases/slope/slope.toml 12 3

@@ -1,0 +1,591 @@
+//! Monte-Carlo ensembles over the stochastic structural planes (docs/method.md
+//! section 4.7): member `k` of an ensemble with base seed `BASE` is the input
+//! file with
+//! - its `perturbation.seed` replaced by [`member_seed`]`(BASE, k)` (a scene with
+//!   `[perturbation]`): another realisation of the random joint geometry;
+//! - each `[[ensemble.random]]` number drawn from its distribution with the
+//!   member's own stream ([`draw`]);
+//!
+//! and is run by the analyses of `[ensemble] analyses`. A member depends on
+//! `(file, BASE, k)` only, so members are the same whatever the sharding
+//! (`--shard I/N` runs members `[I M / N, (I + 1) M / N)`) and thread count, and
+//! their records ([`MemberRecord`], one JSON line each, no timings) are
+//! byte-identical. [`aggregate`] turns the records into the statistics of
+//! [`crate::analysis::stats`].
+
+use std::path::{Path, PathBuf};
+
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+use crate::analysis::stats::{self, ConvergencePoint, Distribution as Stats, Reliability};
+use crate::error::SceneError;
+use crate::lem::{self, LemInput, Method, Mode};
+use crate::mesh::perturb::SplitMix64;
+use crate::scene::{Analysis, Distribution, EnsembleSpec, LemSurface, Scene};
+use crate::summary::EndState;
+use crate::Error;
+
+/// The golden-ratio increment of SplitMix64.
+const GOLDEN: u64 = 0x9E37_79B9_7F4A_7C15;
+/// Separates a member's strength stream from its perturbation seed.
+const STRENGTH_STREAM: u64 = 0x5EED_57E4_6770_0001;
+/// Draws outside `[min, max]` are redrawn at most this often.
+const MAX_REDRAWS: usize = 10_000;
+
+/// Member `k`'s perturbation seed: the `(k + 1)`-th output of a SplitMix64
+/// stream started at `base`, shifted right by one bit so that it is a TOML
+/// integer (`0 <= seed < 2^63`).
+pub fn member_seed(base: u64, k: usize) -> u64 {
+    SplitMix64::new(base.wrapping_add((k as u64).wrapping_mul(GOLDEN))).next_u64() >> 1
+}
+
+/// An input file ready to be varied.
+#[derive(Debug, Clone)]
+pub struct EnsembleInput {
+    pub path: PathBuf,
+    pub base_dir: PathBuf,
+    /// The file without its `[ensemble]` table.
+    table: toml::Table,
+    /// True for a CDEM scene (a `[mesh]` table), false for a LEM file.
+    pub is_scene: bool,
+    pub spec: EnsembleSpec,
+    pub analyses: Vec<Analysis>,
+    /// The mean value of every random variable (its `mean`, or the file's value).
+    pub means: Vec<f64>,
+    /// FNV-1a 64 of the file's bytes: shards of different inputs do not merge.
+    pub digest: u64,
+}
+
+/// A drawn value.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Draw {
+    pub key: String,
+    pub value: f64,
+}
+
+/// The LEM of one member.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LemMember {
+    pub ordinary: Option<f64>,
+    pub bishop: Option<f64>,
+    pub spencer: Option<f64>,
+    /// The circle (xc, zc, r) of the headline method.
+    pub circle: [f64; 3],
+}
+
+/// The CDEM run of one member.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct CdemMember {
+    /// Largest displacement magnitude at the end of phase 1 (m).
+    pub elastic_max_abs_u: f64,
+    pub elastic_converged: bool,
+    pub elastic_steps: usize,
+    /// Phase 2's end state (with `[failure]`).
+    pub end_state: Option<EndState>,
+    pub failed_tension: usize,
+    pub failed_shear: usize,
+    /// Phase-2 step of the first spring failure and the mean position of the
+    /// springs that failed then (m).
+    pub first_failure_step: Option<usize>,
+    pub first_failure_at: Option<[f64; 3]>,
+}
+
+/// One member's record: one JSON line of `members.jsonl`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct MemberRecord {
+    pub member: usize,
+    /// The perturbation seed (a scene with `[perturbation]`), else the seed of its draws.
+    pub seed: u64,
+    pub draws: Vec<Draw>,
+    /// The headline factor of safety: the LEM's Bishop FS (else Spencer's, else ordinary).
+    pub fs: Option<f64>,
+    pub lem: Option<LemMember>,
+    pub cdem: Option<CdemMember>,
+}
+
+fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325u64, |h, &b| (h ^ b as u64).wrapping_mul(0x100_0000_01b3))
+}
+
+/// A key as errors spell it, `interface[0].strength.cohesion`, as path segments.
+fn segments(key: &str) -> Option<Vec<(&str, Option<usize>)>> {
+    key.split('.')
+        .map(|s| match s.split_once('[') {
+            None if !s.is_empty() => Some((s, None)),
+            None => None,
+            Some((name, rest)) => Some((name, Some(rest.strip_suffix(']')?.parse().ok()?))),
+        })
+        .collect()
+}
+
+fn value_at<'a>(table: &'a mut toml::Table, key: &str) -> Option<&'a mut toml::Value> {
+    let segs = segments(key)?;
+    let (last, head) = segs.split_last()?;
+    let mut t = table;
+    let step = |t: &'a mut toml::Table, (name, index): (&str, Option<usize>)| -> Option<&'a mut toml::Value> {
+        let v = t.get_mut(name)?;
+        match index {
+            None => Some(v),
+            Some(i) => v.as_array_mut()?.get_mut(i),
+        }
+    };
+    for &s in head {
+        t = step(t, s)?.as_table_mut()?;
+    }
+    step(t, *last)
+}
+
+impl EnsembleInput {
+    /// Reads a scene or LEM file with an `[ensemble]` table (or none: the
+    /// members then differ only by their perturbation seeds).
+    pub fn load(path: &Path) -> crate::Result<Self> {
+        let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+        let base_dir = path.parent().unwrap_or(Path::new(".")).to_path_buf();
+        let syntax = |e: String| SceneError::Syntax { path: path.to_path_buf(), message: e };
+        let mut table: toml::Table = text.parse().map_err(|e: toml::de::Error| syntax(e.to_string()))?;
+        let is_scene = table.contains_key("mesh");
+        // The file as a whole must be valid as it stands (the mean member).
+        if is_scene {
+            let scene = Scene::from_toml(&text, &base_dir, path)?;
+            if scene.lem.is_none() && scene.perturbation.ratio == 0.0 && scene.ensemble.is_none() {
+                return Err(SceneError::invalid(
+                    "ensemble",
+                    "nothing varies: the scene has no perturbation, no [ensemble] random variables and no [lem]",
+                )
+                .into());
+            }
+        } else {
+            LemInput::from_toml(&text, &base_dir, path)?;
+        }
+        if !is_scene {
+            inline_mesh_section(&mut table, &base_dir)?;
+        }
+        let spec: EnsembleSpec = match table.remove("ensemble") {
+            None => EnsembleSpec::default(),
+            Some(v) => v.try_into().map_err(|e: toml::de::Error| syntax(format!("[ensemble]: {e}")))?,
+        };
+        spec.validate()?;
+        let has_lem = !is_scene || table.contains_key("lem");
+        let analyses = match &spec.analyses {
+            Some(a) => a.clone(),
+            None if !is_scene => vec![Analysis::Lem],
+            None if has_lem => vec![Analysis::Cdem, Analysis::Lem],
+            None => vec![Analysis::Cdem],
+        };
+        if analyses.contains(&Analysis::Cdem) && !is_scene {
+            return Err(SceneError::invalid("ensemble.analyses", "\"cdem\" needs a scene (a file with [mesh])").into());
+        }
+        if analyses.contains(&Analysis::Lem) && !has_lem {
+            return Err(SceneError::invalid("ensemble.analyses", "\"lem\" needs a [lem] table in the scene").into());
+        }
+        let mut means = Vec::with_capacity(spec.random.len());
+        for (i, r) in spec.random.iter().enumerate() {
+            let file_value =
+                value_at(&mut table, &r.key).and_then(|v| v.as_float().or(v.as_integer().map(|n| n as f64)));
+            let Some(v) = file_value else {
+                return Err(SceneError::invalid(
+                    format!("ensemble.random[{i}].key"),
+                    format!("{:?} is not a number of this file (keys are spelled as in errors: interface[0].strength.cohesion)", r.key),
+                )
+                .into());
+            };
+            let mean = r.mean.unwrap_or(v);
+            if r.distribution == Distribution::Lognormal && mean <= 0.0 {
+                return Err(SceneError::invalid(
+                    format!("ensemble.random[{i}].mean"),
+                    format!("a lognormal variable needs a positive mean, got {mean}"),
+                )
+                .into());
+            }
+            means.push(mean);
+        }
+        Ok(EnsembleInput {
+            path: path.to_path_buf(),
+            base_dir,
+            table,
+            is_scene,
+            spec,
+            analyses,
+            means,
+            digest: fnv1a(text.as_bytes()),
+        })
+    }
+
+    /// The `[ensemble] members` default, else 100.
+    pub fn default_members(&self) -> usize {
+        self.spec.members.unwrap_or(100)
+    }
+
+    /// The `[ensemble] seed` default, else 1.
+    pub fn default_seed(&self) -> u64 {
+        self.spec.seed.unwrap_or(1)
+    }
+
+    /// Member `k`'s file text and draws.
+    fn member_text(&self, base: u64, k: usize) -> crate::Result<(String, u64, Vec<Draw>)> {
+        let seed = member_seed(base, k);
+        let mut table = self.table.clone();
+        if let Some(p) = table.get_mut("perturbation").and_then(toml::Value::as_table_mut) {
+            p.insert("seed".into(), toml::Value::Integer(seed as i64));
+        }
+        let mut rng = SplitMix64::new(seed ^ STRENGTH_STREAM);
+        let mut draws = Vec::with_capacity(self.spec.random.len());
+        for (i, (r, &mean)) in self.spec.random.iter().zip(&self.means).enumerate() {
+            let value = draw(&mut rng, r.distribution, mean, r.std_dev, r.min, r.max).ok_or_else(|| {
+                SceneError::invalid(
+                    format!("ensemble.random[{i}]"),
+                    format!("no draw within [min, max] in {MAX_REDRAWS} tries: the bounds exclude the distribution"),
+                )
+            })?;
+            *value_at(&mut table, &r.key).expect("checked at load") = toml::Value::Float(value);
+            draws.push(Draw { key: r.key.clone(), value });
+        }
+        let text = toml::to_string(&table).map_err(|e| Error::io(&self.path, std::io::Error::other(e)))?;
+        Ok((text, seed, draws))
+    }
+}
+
+/// A LEM file's `section.from_mesh` read once: its ground and lowest node
+/// written into the table, so that members do not each read the mesh.
+fn inline_mesh_section(table: &mut toml::Table, base_dir: &Path) -> crate::Result<()> {
+    let Some(section) = table.get_mut("section").and_then(toml::Value::as_table_mut) else { return Ok(()) };
+    let Some(file) = section.get("from_mesh").and_then(toml::Value::as_str).map(PathBuf::from) else { return Ok(()) };
+    let group = section.get("ground_group").and_then(toml::Value::as_str).unwrap_or_default().to_string();
+    let y_plane = section.get("y_plane").and_then(|v| v.as_float().or(v.as_integer().map(|n| n as f64)));
+    let mesh = crate::mesh::gmsh::read_msh(&base_dir.join(file))?;
+    let (ground, z_min) = lem::LemSection::from_mesh(&mesh, &group, y_plane)?;
+    for k in ["from_mesh", "ground_group", "y_plane"] {
+        section.remove(k);
+    }
+    let points = ground.iter().map(|p| toml::Value::Array(vec![p[0].into(), p[1].into()])).collect();
+    section.insert("ground".into(), toml::Value::Array(points));
+    if !section.contains_key("lower_bound") {
+        section.entry("z_min").or_insert(z_min.into());
+    }
+    Ok(())
+}
+
+/// A standard normal variate (Box-Muller, the cosine branch; two uniforms per draw).
+fn standard_normal(rng: &mut SplitMix64) -> f64 {
+    let u1 = 1.0 - rng.next_f64(); // (0, 1]
+    let u2 = rng.next_f64();
+    (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+}
+
+/// One draw of a normal or lognormal variable with mean `mean` and standard
+/// deviation `sd` (of the variable itself: for the lognormal,
+/// `s^2 = ln(1 + sd^2 / mean^2)`, `ln X ~ N(ln mean - s^2 / 2, s^2)`),
+/// redrawn while outside `[min, max]`; `None` if that never succeeds.
+pub fn draw(
+    rng: &mut SplitMix64,
+    d: Distribution,
+    mean: f64,
+    sd: f64,
+    min: Option<f64>,
+    max: Option<f64>,
+) -> Option<f64> {
+    (0..MAX_REDRAWS)
+        .map(|_| {
+            let z = standard_normal(rng);
+            match d {
+                Distribution::Normal => mean + sd * z,
+                Distribution::Lognormal => {
+                    let s2 = (1.0 + (sd / mean).powi(2)).ln();
+                    (mean.ln() - 0.5 * s2 + s2.sqrt() * z).exp()
+                }
+            }
+        })
+        .find(|v| min.is_none_or(|lo| *v >= lo) && max.is_none_or(|hi| *v <= hi))
+}
+
+/// Which members a shard runs: `[I M / N, (I + 1) M / N)`.
+pub fn shard_range(members: usize, shard: (usize, usize)) -> std::ops::Range<usize> {
+    let (i, n) = shard;
+    (i * members / n)..((i + 1) * members / n)
+}
+
+fn headline(fs: &lem::PerMethod<f64>) -> Option<(Method, f64)> {
+    [Method::Bishop, Method::Spencer, Method::Ordinary].into_iter().find_map(|m| fs.get(m).map(|&f| (m, f)))
+}
+
+/// The critical circle of the mean input, for `lem_surface = "critical"`.
+pub fn mean_critical_circle(input: &EnsembleInput) -> crate::Result<Option<lem::Circle>> {
+    if !input.analyses.contains(&Analysis::Lem) || input.spec.lem_surface == LemSurface::Search {
+        return Ok(None);
+    }
+    let text = toml::to_string(&input.table).map_err(|e| Error::io(&input.path, std::io::Error::other(e)))?;
+    let lem_input = lem_input_of(input, &text)?;
+    if let Mode::Circle(c) = lem_input.mode {
+        return Ok(Some(c));
+    }
+    let result = lem::analyse(&lem_input)?;
+    let (m, _) = headline(&result.fs).ok_or_else(|| {
+        SceneError::invalid("lem", "the mean input has no admissible slip circle: no critical circle to sample on")
+    })?;
+    let c = result.critical.get(m).expect("a method with an FS has a circle");
+    Ok(Some(lem::Circle { xc: c.xc, zc: c.zc, r: c.r }))
+}
+
+fn lem_input_of(input: &EnsembleInput, text: &str) -> crate::Result<LemInput> {
+    if input.is_scene {
+        super::lem::scene_lem_input(&Scene::from_toml(text, &input.base_dir, &input.path)?)
+    } else {
+        LemInput::from_toml(text, &input.base_dir, &input.path)
+    }
+}
+
+/// Runs member `k`. `circle`: the mean critical circle (LEM on it), or None (a search).
+pub fn run_member(
+    input: &EnsembleInput,
+    base: u64,
+    k: usize,
+    circle: Option<lem::Circle>,
+) -> crate::Result<MemberRecord> {
+    let (text, seed, draws) = input.member_text(base, k)?;
+    let member_error = |e: Error| match e {
+        Error::Scene(SceneError::Invalid { key, reason }) => {
+            Error::Scene(SceneError::invalid(key, format!("{reason} (ensemble member {k}, draws {draws:?})")))
+        }
+        other => other,
+    };
+    let mut record = MemberRecord { member: k, seed, draws: draws.clone(), fs: None, lem: None, cdem: None };
+    if input.analyses.contains(&Analysis::Lem) {
+        let mut lem_input = lem_input_of(input, &text).map_err(member_error)?;
+        if let Some(c) = circle {
+            lem_input.mode = Mode::Circle(c);
+        }
+        // On a fixed circle a member may have no FS (e.g. m_alpha <= 0): recorded as none.
+        let result = match lem::analyse(&lem_input) {
+            Ok(r) => Some(r),
+            Err(_) if circle.is_some() => None,
+            Err(e) => return Err(member_error(e)),
+        };
+        if let Some(r) = result {
+            let h = headline(&r.fs);
+            let c = h.and_then(|(m, _)| r.critical.get(m).copied());
+            record.fs = h.map(|(_, f)| f);
+            record.lem = Some(LemMember {
+                ordinary: r.fs.get(Method::Ordinary).copied(),
+                bishop: r.fs.get(Method::Bishop).copied(),
+                spencer: r.fs.get(Method::Spencer).copied(),
+                circle: c.map_or([f64::NAN; 3], |c| [c.xc, c.zc, c.r]),
+            });
+        }
+    }
+    if input.analyses.contains(&Analysis::Cdem) {
+        let scene = Scene::from_toml(&text, &input.base_dir, &input.path).map_err(|e| member_error(e.into()))?;
+        let run = super::run_scene(&scene, &mut |_, _| {})?;
+        let s = &run.summary;
+        let phase1 = s.phase1.as_ref();
+        let mut m = CdemMember {
+            elastic_max_abs_u: phase1.map_or(s.max_abs_u, |p| p.max_displacement),
+            elastic_converged: run.elastic.converged,
+            elastic_steps: run.elastic.steps,
+            end_state: s.phase2.as_ref().map(|p| p.end_state),
+            failed_tension: s.failed_springs.tension,
+            failed_shear: s.failed_springs.shear,
+            first_failure_step: None,
+            first_failure_at: None,
+        };
+        if let Some(f) = &run.failure {
+            if let Some(first) = f.failed_at.iter().flatten().min().copied() {
+                let (mut sum, mut n) = ([0.0; 3], 0.0);
+                for (i, _) in f.failed_at.iter().enumerate().filter(|(_, s)| **s == Some(first)) {
+                    let (a, b) = (run.model.springs.a[i] as usize, run.model.springs.b[i] as usize);
+                    for c in 0..3 {
+                        sum[c] += 0.5 * (run.model.x0[a][c] + run.model.x0[b][c]);
+                    }
+                    n += 1.0;
+                }
+                m.first_failure_step = Some(first);
+                m.first_failure_at = Some(sum.map(|v| v / n));
+            }
+        }
+        record.cdem = Some(m);
+    }
+    Ok(record)
+}
+
+/// Runs the members `range` in order; LEM-only members in parallel (results
+/// in member order, independent of the thread count). `progress(done)` after
+/// each batch.
+pub fn run_members(
+    input: &EnsembleInput,
+    base: u64,
+    range: std::ops::Range<usize>,
+    progress: &mut dyn FnMut(usize),
+) -> crate::Result<Vec<MemberRecord>> {
+    let circle = mean_critical_circle(input)?;
+    let parallel = !input.analyses.contains(&Analysis::Cdem);
+    let batch = if parallel { 256 } else { 1 };
+    let mut out = Vec::with_capacity(range.len());
+    let ks: Vec<usize> = range.collect();
+    for chunk in ks.chunks(batch) {
+        let records: Vec<crate::Result<MemberRecord>> = if parallel {
+            chunk.par_iter().map(|&k| run_member(input, base, k, circle)).collect()
+        } else {
+            chunk.iter().map(|&k| run_member(input, base, k, circle)).collect()
+        };
+        for r in records {
+            out.push(r?);
+        }
+        progress(out.len());
+    }
+    Ok(out)
+}
+
+/// What `ensemble.json` holds.
+#[derive(Debug, Clone, Serialize)]
+pub struct EnsembleSummary {
+    pub input: String,
+    pub members: usize,
+    pub seed: u64,
+    pub analyses: Vec<Analysis>,
+    pub lem_surface: Option<LemSurface>,
+    /// The mean critical circle (xc, zc, r) the members were evaluated on.
+    pub lem_circle: Option<[f64; 3]>,
+    pub fs_source: Option<&'static str>,
+    /// Members without an FS (an inadmissible circle, no Bishop root).
+    pub members_without_fs: usize,
+    pub fs: Option<Stats>,
+    pub reliability: Option<Reliability>,
+    pub convergence: Vec<ConvergencePoint>,
+    /// Statistics of each random variable's draws.
+    pub draws: Vec<(String, Stats)>,
+    pub elastic_max_abs_u: Option<Stats>,
+    /// Members per phase-2 end state.
+    pub end_states: Vec<(EndState, usize)>,
+}
+
+/// The statistics of complete records (member order).
+pub fn aggregate(
+    input: &str,
+    seed: u64,
+    analyses: &[Analysis],
+    lem_surface: Option<LemSurface>,
+    lem_circle: Option<lem::Circle>,
+    records: &[MemberRecord],
+) -> EnsembleSummary {
+    let fs: Vec<f64> = records.iter().filter_map(|r| r.fs).collect();
+    let keys: Vec<String> = records.first().map_or(Vec::new(), |r| r.draws.iter().map(|d| d.key.clone()).collect());
+    let draws = keys
+        .iter()
+        .enumerate()
+        .filter_map(|(i, k)| {
+            let v: Vec<f64> = records.iter().map(|r| r.draws[i].value).collect();
+            stats::distribution(&v).map(|d| (k.clone(), d))
+        })
+        .collect();
+    let u: Vec<f64> = records.iter().filter_map(|r| r.cdem.as_ref().map(|c| c.elastic_max_abs_u)).collect();
+    let mut end_states = Vec::new();
+    for e in [EndState::Equilibrium, EndState::GlobalSliding, EndState::Undecided] {
+        let n = records.iter().filter(|r| r.cdem.as_ref().and_then(|c| c.end_state) == Some(e)).count();
+        if n > 0 {
+            end_states.push((e, n));
+        }
+    }
+    let has_lem = analyses.contains(&Analysis::Lem);
+    EnsembleSummary {
+        input: input.to_string(),
+        members: records.len(),
+        seed,
+        analyses: analyses.to_vec(),
+        lem_surface: lem_surface.filter(|_| has_lem),
+        lem_circle: lem_circle.map(|c| [c.xc, c.zc, c.r]),
+        fs_source: has_lem.then_some("LEM Bishop simplified (else Spencer, else ordinary)"),
+        members_without_fs: records.len() - fs.len(),
+        fs: stats::distribution(&fs),
+        reliability: stats::reliability(&fs),
+        convergence: if fs.is_empty() { Vec::new() } else { stats::convergence(&fs) },
+        draws,
+        elastic_max_abs_u: stats::distribution(&u),
+        end_states,
+    }
+}
+
+/// `shard-I-of-N.json`: what a shard ran, for `cdem ensemble merge`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ShardInfo {
+    pub input: String,
+    pub digest: String,
+    pub members: usize,
+    pub seed: u64,
+    pub shard: [usize; 2],
+    pub first: usize,
+    pub end: usize,
+    pub wall_s: f64,
+    pub threads: usize,
+}
+
+/// Member records from shard directories, checked to be one complete
+/// ensemble: same input and seed, every member exactly once; each with its
+/// JSON line as the shard wrote it.
+pub fn merge_shards(dirs: &[PathBuf]) -> crate::Result<(ShardInfo, Vec<(MemberRecord, String)>)> {
+    let mut infos: Vec<ShardInfo> = Vec::new();
+    // Each record with its line as written: the merged file repeats the lines.
+    let mut records: Vec<(MemberRecord, String)> = Vec::new();
+    let invalid = |key: &str, reason: String| Error::from(SceneError::invalid(key, reason));
+    for dir in dirs {
+        let entries = std::fs::read_dir(dir).map_err(|e| Error::io(dir, e))?;
+        let mut names: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
+        names.sort();
+        for p in names {
+            let name = p.file_name().and_then(|n| n.to_str()).unwrap_or("");
+            if name.starts_with("shard-") && name.ends_with(".json") {
+                let text = std::fs::read_to_string(&p).map_err(|e| Error::io(&p, e))?;
+                let info: ShardInfo = serde_json::from_str(&text)
+                    .map_err(|e| invalid("merge", format!("{}: not a shard record: {e}", p.display())))?;
+                let jsonl = p.with_file_name(name.replace("shard-", "members-").replace(".json", ".jsonl"));
+                let text = std::fs::read_to_string(&jsonl).map_err(|e| Error::io(&jsonl, e))?;
+                for (line, l) in text.lines().enumerate() {
+                    let r: MemberRecord = serde_json::from_str(l)
+                        .map_err(|e| invalid("merge", format!("{} line {}: {e}", jsonl.display(), line + 1)))?;
+                    records.push((r, l.to_string()));
+                }
+                infos.push(info);
+            }
+        }
+    }
+    let Some(first) = infos.first().cloned() else {
+        return Err(invalid("merge", format!("no shard-*.json in {dirs:?}")));
+    };
+    for i in &infos {
+        if (i.digest.as_str(), i.members, i.seed) != (first.digest.as_str(), first.members, first.seed) {
+            return Err(invalid(
+                "merge",
+                format!(
+                    "shard {}/{} ran {} (seed {}, {} members), shard {}/{} ran {} (seed {}, {} members)",
+                    first.shard[0],
+                    first.shard[1],
+                    first.input,
+                    first.seed,
+                    first.members,
+                    i.shard[0],
+                    i.shard[1],
+                    i.input,
+                    i.seed,
+                    i.members
+                ),
+            ));
+        }
+    }
+    records.sort_by_key(|r| r.0.member);
+    for (k, (r, _)) in records.iter().enumerate() {
+        if r.member != k {
+            let what = if r.member < k { "twice" } else { "missing" };
+            let m = if r.member < k { r.member } else { k };
+            return Err(invalid("merge", format!("member {m} is {what} (merging {} shards)", infos.len())));
+        }
+    }
+    if records.len() != first.members {
+        return Err(invalid("merge", format!("{} of {} members present", records.len(), first.members)));
+    }
+    let wall: f64 = infos.iter().map(|i| i.wall_s).sum();
+    Ok((ShardInfo { shard: [0, 1], first: 0, end: first.members, wall_s: wall, ..first }, records))
+}
+
+/// The digest as text (JSON numbers lose bits above 2^53).
+pub fn digest_hex(d: u64) -> String {
+    format!("{d:016x}")
+}

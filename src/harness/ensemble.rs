@@ -1,0 +1,244 @@
+//! `cdem ensemble`: runs a shard (or all) of an ensemble's members and writes
+//! its files, and merges shards; the figures of an ensemble (FS histogram with
+//! FS = 1 marked, convergence of the mean FS and of PF with the member count).
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use plotters::prelude::*;
+
+use crate::drivers::ensemble::{self as ens, EnsembleInput, EnsembleSummary, MemberRecord, ShardInfo};
+use crate::error::Error;
+
+/// What `cdem ensemble INPUT` was asked for.
+#[derive(Debug, Clone)]
+pub struct Request {
+    pub input: PathBuf,
+    pub out: PathBuf,
+    /// `--members` (default: `[ensemble] members`, else 100).
+    pub members: Option<usize>,
+    /// `--seed` (default: `[ensemble] seed`, else 1).
+    pub seed: Option<u64>,
+    /// `--shard I/N` (default 0/1: the whole ensemble, merged at once).
+    pub shard: (usize, usize),
+}
+
+/// What was written.
+pub enum Outcome {
+    /// A shard of several: its records, to be merged.
+    Shard { info: ShardInfo },
+    /// The whole ensemble, aggregated.
+    Whole { summary: Box<EnsembleSummary> },
+}
+
+/// Runs the requested members; `progress(done, total)` after each batch.
+pub fn run(req: &Request, progress: &mut dyn FnMut(usize, usize)) -> crate::Result<Outcome> {
+    let t0 = Instant::now();
+    let input = EnsembleInput::load(&req.input)?;
+    let members = req.members.unwrap_or(input.default_members());
+    let seed = req.seed.unwrap_or(input.default_seed());
+    let (i, n) = req.shard;
+    if n == 0 || i >= n || n > members.max(1) {
+        return Err(crate::error::SceneError::invalid(
+            "--shard",
+            format!("I/N needs 0 <= I < N <= members ({members}), got {i}/{n}"),
+        )
+        .into());
+    }
+    let range = ens::shard_range(members, req.shard);
+    let total = range.len();
+    let records = ens::run_members(&input, seed, range.clone(), &mut |done| progress(done, total))?;
+    let info = ShardInfo {
+        input: req.input.display().to_string(),
+        digest: ens::digest_hex(input.digest),
+        members,
+        seed,
+        shard: [i, n],
+        first: range.start,
+        end: range.end,
+        wall_s: t0.elapsed().as_secs_f64(),
+        threads: rayon::current_num_threads(),
+    };
+    if n > 1 {
+        crate::output::ensemble::write_shard(&req.out, &info, &records)?;
+        return Ok(Outcome::Shard { info });
+    }
+    let circle = ens::mean_critical_circle(&input)?;
+    let summary = ens::aggregate(&info.input, seed, &input.analyses, Some(input.spec.lem_surface), circle, &records);
+    finish(&req.out, &summary, &records, None)?;
+    crate::output::write_json(&req.out.join("run.json"), &info)?;
+    Ok(Outcome::Whole { summary: Box::new(summary) })
+}
+
+/// `cdem ensemble merge DIR... --out OUT`.
+pub fn merge(dirs: &[PathBuf], out: &Path) -> crate::Result<EnsembleSummary> {
+    let (info, lines) = ens::merge_shards(dirs)?;
+    let records: Vec<MemberRecord> = lines.iter().map(|(r, _)| r.clone()).collect();
+    let input = EnsembleInput::load(Path::new(&info.input))?;
+    if ens::digest_hex(input.digest) != info.digest {
+        return Err(crate::error::SceneError::invalid(
+            "merge",
+            format!(
+                "{} changed since the shards ran (digest {} now, {} then)",
+                info.input,
+                ens::digest_hex(input.digest),
+                info.digest
+            ),
+        )
+        .into());
+    }
+    let circle = ens::mean_critical_circle(&input)?;
+    let summary =
+        ens::aggregate(&info.input, info.seed, &input.analyses, Some(input.spec.lem_surface), circle, &records);
+    let text: String = lines.iter().map(|(_, l)| format!("{l}\n")).collect();
+    finish(out, &summary, &records, Some(&text))?;
+    crate::output::write_json(&out.join("run.json"), &info)?;
+    Ok(summary)
+}
+
+/// Writes the ensemble's files; `lines`: the member lines as the shards wrote them.
+fn finish(out: &Path, summary: &EnsembleSummary, records: &[MemberRecord], lines: Option<&str>) -> crate::Result<()> {
+    crate::output::ensemble::write_ensemble(out, summary, records, lines)?;
+    let fs: Vec<f64> = records.iter().filter_map(|r| r.fs).collect();
+    if !fs.is_empty() {
+        histogram(&out.join("fs-histogram.png"), &fs, summary)?;
+        convergence(&out.join("convergence.png"), summary)?;
+    }
+    Ok(())
+}
+
+fn plot_err(path: &Path, e: impl std::fmt::Display) -> Error {
+    Error::io(path, std::io::Error::other(format!("drawing the figure: {e}")))
+}
+
+/// Histogram of the members' FS, FS = 1 and the mean marked.
+pub fn histogram(path: &Path, fs: &[f64], s: &EnsembleSummary) -> crate::Result<()> {
+    super::figures::init_fonts();
+    let (lo, hi) = fs.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
+    let (lo, hi) = (lo.min(1.0), hi.max(1.0));
+    let span = (hi - lo).max(1e-6);
+    let bins = ((fs.len() as f64).sqrt().ceil() as usize).clamp(10, 60);
+    let w = 1.1 * span / bins as f64;
+    // FS = 1 on a bin edge: a bin is wholly failing or wholly not.
+    let x0 = 1.0 - ((1.0 - (lo - 0.05 * span)) / w).ceil() * w;
+    let bins = (((hi + 0.05 * span) - x0) / w).ceil() as usize;
+    let x1 = x0 + bins as f64 * w;
+    let mut counts = vec![0usize; bins];
+    for &v in fs {
+        counts[(((v - x0) / w) as usize).min(bins - 1)] += 1;
+    }
+    let ymax = *counts.iter().max().unwrap_or(&1) as f64 * 1.15;
+    let root = BitMapBackend::new(path, (900, 560)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| plot_err(path, e))?;
+    let r = s.reliability.as_ref();
+    let caption = format!(
+        "Factor of safety over {} members: mean {:.3}, PF = {:.3}",
+        fs.len(),
+        s.fs.as_ref().map_or(f64::NAN, |d| d.mean),
+        r.map_or(f64::NAN, |r| r.probability_of_failure)
+    );
+    let mut chart = ChartBuilder::on(&root)
+        .caption(caption, ("sans-serif", 22))
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(60)
+        .build_cartesian_2d(x0..x1, 0.0..ymax)
+        .map_err(|e| plot_err(path, e))?;
+    chart
+        .configure_mesh()
+        .x_desc("factor of safety")
+        .y_desc("members")
+        .y_label_formatter(&|v| format!("{v:.0}"))
+        .label_style(("sans-serif", 15))
+        .draw()
+        .map_err(|e| plot_err(path, e))?;
+    let fill = RGBColor(70, 130, 180);
+    chart
+        .draw_series(counts.iter().enumerate().map(|(k, &c)| {
+            let a = x0 + k as f64 * w;
+            let colour = if a + 0.5 * w < 1.0 { RGBColor(200, 60, 50) } else { fill };
+            Rectangle::new([(a, 0.0), (a + w, c as f64)], colour.mix(0.85).filled())
+        }))
+        .map_err(|e| plot_err(path, e))?;
+    chart
+        .draw_series(std::iter::once(PathElement::new(vec![(1.0, 0.0), (1.0, ymax)], BLACK.stroke_width(2))))
+        .map_err(|e| plot_err(path, e))?
+        .label("FS = 1")
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2)));
+    if let Some(d) = &s.fs {
+        let m = d.mean;
+        chart
+            .draw_series(std::iter::once(PathElement::new(
+                vec![(m, 0.0), (m, ymax)],
+                RGBColor(255, 140, 0).stroke_width(2),
+            )))
+            .map_err(|e| plot_err(path, e))?
+            .label("mean")
+            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], RGBColor(255, 140, 0).stroke_width(2)));
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 15))
+        .draw()
+        .map_err(|e| plot_err(path, e))?;
+    root.present().map_err(|e| plot_err(path, e))
+}
+
+/// Mean FS and PF of the first n members against n (log n).
+pub fn convergence(path: &Path, s: &EnsembleSummary) -> crate::Result<()> {
+    super::figures::init_fonts();
+    let pts = &s.convergence;
+    if pts.is_empty() {
+        return Ok(());
+    }
+    let root = BitMapBackend::new(path, (900, 700)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| plot_err(path, e))?;
+    let panels = root.split_evenly((2, 1));
+    let n1 = pts.last().map_or(10.0, |p| p.n as f64).max(10.0);
+    let n0 = pts.first().map_or(1.0, |p| p.n as f64).min(n1 / 2.0);
+    // (title, points, the full ensemble's value)
+    type Panel<'a> = (&'a str, Vec<(f64, f64)>, Option<f64>);
+    let series: [Panel; 2] = [
+        (
+            "mean FS of the first n members",
+            pts.iter().map(|p| (p.n as f64, p.mean)).collect(),
+            s.fs.as_ref().map(|d| d.mean),
+        ),
+        (
+            "P(FS < 1) of the first n members",
+            pts.iter().map(|p| (p.n as f64, p.probability_of_failure)).collect(),
+            s.reliability.as_ref().map(|r| r.probability_of_failure),
+        ),
+    ];
+    for (area, (title, line, last)) in panels.iter().zip(series) {
+        let (lo, hi) = line.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.1), b.max(p.1)));
+        let pad = ((hi - lo) * 0.1).max(1e-3 * hi.abs().max(1e-3));
+        let mut chart = ChartBuilder::on(area)
+            .caption(title, ("sans-serif", 19))
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(70)
+            .build_cartesian_2d((n0..n1).log_scale(), (lo - pad)..(hi + pad))
+            .map_err(|e| plot_err(path, e))?;
+        chart
+            .configure_mesh()
+            .x_desc("members n")
+            .x_label_formatter(&|v| format!("{v:.0}"))
+            .y_label_formatter(&|v| format!("{v:.3}"))
+            .label_style(("sans-serif", 14))
+            .draw()
+            .map_err(|e| plot_err(path, e))?;
+        let c = RGBColor(31, 119, 180);
+        chart.draw_series(LineSeries::new(line.clone(), c.stroke_width(2))).map_err(|e| plot_err(path, e))?;
+        chart.draw_series(line.iter().map(|&p| Circle::new(p, 4, c.filled()))).map_err(|e| plot_err(path, e))?;
+        if let Some(v) = last {
+            chart
+                .draw_series(std::iter::once(PathElement::new(vec![(n0, v), (n1, v)], BLACK.mix(0.5).stroke_width(1))))
+                .map_err(|e| plot_err(path, e))?;
+        }
+    }
+    root.present().map_err(|e| plot_err(path, e))
+}
