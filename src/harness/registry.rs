@@ -483,14 +483,14 @@ pub fn extreme_cases() -> [ExtremeCase; 8] {
     };
     [
         case("joints-soft", "soft joints, K_n L/(E A) = 1: column + series joints", soft, 1e-5),
-        case("joints-stiff", "stiff joints, K_n L/(E A) = 1e6: column (if converged)", column, 1e-3),
+        case("joints-stiff", "stiff joints, K_n L/(E A) = 1e6: column (joint compliance 3e-7)", column, 1e-5),
         case(
             "poisson-0499",
             "nu = 0.499: column with M(nu = 0.499)",
             layered_top_uz(&[(0.0, h, rho, oedometric_modulus(c.young, 0.499))]),
             1e-5,
         ),
-        case("perturbation-near-limit", "perturbation 0.49: column", column, 2e-3),
+        case("perturbation-near-limit", "perturbation 0.49: column (distorted elements, measured 5.9e-5)", column, 2e-4),
         case("aspect-1-50", "aspect ratio 1:50: column", column, 1e-5),
         case(
             "contrast-modulus-1e4",
