@@ -5,7 +5,9 @@
 
 use cdem::drivers::{run_scene, RunResult};
 use cdem::harness::registry::{self as reg, column_szz, column_uz, measured_top_uz, CONFINED_COLUMN};
-use cdem::harness::validation::{column_base_stress, column_element_stress_error, column_merged_row, column_springs_rows};
+use cdem::harness::validation::{
+    column_base_stress, column_element_stress_error, column_merged_row, column_springs_rows,
+};
 use cdem::scene::{JointMode, Scene};
 
 const H: f64 = CONFINED_COLUMN.height;

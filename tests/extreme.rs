@@ -67,8 +67,11 @@ fn stiff_and_extreme_cases_are_stable_and_right_or_say_not_converged() {
     cdem::harness::report::record("extreme", &rows);
     let _ = std::fs::create_dir_all("target");
     let _ = std::fs::write("target/extreme-report.md", &md);
-    let failed: Vec<String> =
-        rows.iter().filter(|c| !c.passed()).map(|c| format!("{}: {:.2e} {:?}", c.id, c.rel_error(), c.defect)).collect();
+    let failed: Vec<String> = rows
+        .iter()
+        .filter(|c| !c.passed())
+        .map(|c| format!("{}: {:.2e} {:?}", c.id, c.rel_error(), c.defect))
+        .collect();
     assert!(failed.is_empty(), "{failed:?}");
     for (name, ratio) in decay {
         assert!(ratio <= KE_DECAY, "{name}: kinetic energy at the end {ratio:.1e} of its peak");

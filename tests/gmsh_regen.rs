@@ -74,7 +74,12 @@ fn committed_case_meshes_match_their_geo() {
     }
     let _ = std::fs::remove_dir_all(&dir);
     let ours = format!("{} of {} meshes equal", geos.len() - failures.len(), geos.len());
-    let row = spec.compared(&ours, &format!("{} of {} meshes equal", geos.len(), geos.len()), failures.is_empty(), t0.elapsed().as_secs_f64());
+    let row = spec.compared(
+        &ours,
+        &format!("{} of {} meshes equal", geos.len(), geos.len()),
+        failures.is_empty(),
+        t0.elapsed().as_secs_f64(),
+    );
     cdem::harness::report::record("gmsh_regen", &[row]);
     assert!(failures.is_empty(), "committed meshes differ from their .geo:\n{}", failures.join("\n"));
 }

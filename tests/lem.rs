@@ -76,7 +76,12 @@ fn acads_1a_spencer_agrees_with_slide_and_is_reported_against_the_referee() {
     cdem::harness::report::record("lem_acads", &rows);
     // The referee half is reported, not asserted: outside the 1.5 % band, a
     // `not met` row in plain sight (references/lem.md).
-    assert_eq!(rows[3].status(), cdem::harness::report::Status::NotMet, "Spencer vs referee: {:.2e}", rows[3].rel_error());
+    assert_eq!(
+        rows[3].status(),
+        cdem::harness::report::Status::NotMet,
+        "Spencer vs referee: {:.2e}",
+        rows[3].rel_error()
+    );
     assert!(
         (c.fs - ACADS_SLIDE_SPENCER).abs() <= tol * ACADS_SLIDE_SPENCER,
         "Spencer FS {} vs Slide {ACADS_SLIDE_SPENCER}",

@@ -9,7 +9,7 @@ use std::path::Path;
 use cdem::harness::perf::bytes::step_bytes;
 use cdem::harness::perf::headline::{headline, paper_slope};
 use cdem::harness::perf::scaling::fit_power;
-use cdem::harness::report::{record, Check};
+use cdem::harness::report::record;
 
 /// The fit recovers an exact power law.
 #[test]
@@ -59,46 +59,9 @@ fn headline_figures_for_the_report() {
     let h = headline(Path::new("."), &scene, &model, &mut |_| {}).unwrap();
     assert!(h.dr_block.converged, "DR of the paper slope converges");
     println!("{}", h.markdown());
-    let src = "references/performance.md";
-    let mut rows = vec![
-        Check::new(
-            "performance: paper slope step (block masses)",
-            "M element-steps/s; reference: lumped masses",
-            h.step_block.mega_element_steps_per_s,
-            h.step_lumped.mega_element_steps_per_s,
-            f64::NAN,
-            src,
-            h.step_block.step_s,
-        ),
-        Check::new(
-            "performance: paper slope step",
-            "bandwidth / stream triad (goal 0.5)",
-            h.step_fraction_of_stream(),
-            0.5,
-            f64::NAN,
-            src,
-            h.step_block.step_s,
-        ),
-        Check::new(
-            "performance: paper slope",
-            "DR to 1e-5 / FEM solve time (goal 3)",
-            h.dr_over_fem(),
-            3.0,
-            f64::NAN,
-            src,
-            h.dr_block.seconds,
-        ),
-    ];
-    for (case, ours, pyslope) in &h.lem {
-        rows.push(Check::new(
-            &format!("performance: LEM grid, {case}"),
-            "pySlope / ours time (goal 100)",
-            pyslope / ours,
-            100.0,
-            f64::NAN,
-            src,
-            *ours,
-        ));
+    let rows = cdem::harness::validation::perf_rows(&h);
+    for c in &rows {
+        println!("{}: {:.3} against {} ({:?})", c.id, c.ours, c.reference, c.status());
     }
     record("performance", &rows);
 }

@@ -125,10 +125,7 @@ fn recorded_rows_are_taken_once_and_rows_of_a_rebuilt_writer_are_stale() {
     assert!(t.failures().is_empty(), "{:?}", t.failures());
     let second = take_recorded(&rows_dir);
     assert!(second.rows.is_empty(), "the rows were moved aside");
-    assert_eq!(
-        Table::assemble(&reg::rows(), second.rows, &[], &|_| String::new()).failures().len(),
-        reg::rows().len()
-    );
+    assert_eq!(Table::assemble(&reg::rows(), second.rows, &[], &|_| String::new()).failures().len(), reg::rows().len());
 
     // A row file whose writer has another modification time than recorded.
     let writer = dir.join("writer");

@@ -80,14 +80,8 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
     assert_eq!(signs(&seg_springs), signs(&seg_fem), "spring- and stress-based segments agree");
     // The rows (recorded before the snapshot assertion, so that a changed
     // snapshot shows as a failing `differs` row too).
-    let rows = cdem::harness::validation::slip_rows(
-        k_springs.k,
-        k_cdem.k,
-        k_fem.k,
-        fs_lem,
-        &seg_springs,
-        run.summary.wall_s,
-    );
+    let rows =
+        cdem::harness::validation::slip_rows(k_springs.k, k_cdem.k, k_fem.k, fs_lem, &seg_springs, run.summary.wall_s);
     cdem::harness::report::record("slip_surface", &rows);
     for c in &rows {
         println!("{}: {:?}", c.id, c.status());
@@ -97,7 +91,10 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
     // The literal sign pattern differs from the paper's (references/paper.md):
     // a reported `differs` row until a convention that reproduces it is found.
     assert_eq!(rows[6].status(), cdem::harness::report::Status::Differs);
-    insta::assert_yaml_snapshot!("ki_segments_cdem_springs", cdem::harness::validation::describe_segments(&seg_springs));
+    insta::assert_yaml_snapshot!(
+        "ki_segments_cdem_springs",
+        cdem::harness::validation::describe_segments(&seg_springs)
+    );
 
     // Fig. 9: the surface on the section, and K_i from toe to crest.
     std::fs::create_dir_all("target/figures").unwrap();

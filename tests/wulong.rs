@@ -368,7 +368,8 @@ fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_
     );
     // Cracks open first below mid-height, then climb: the ones opening later lie higher.
     let first_bands: Vec<Band> = first_open.iter().filter(|(_, k)| **k == first_crack_stage).map(|(b, _)| *b).collect();
-    let toe_first = first_bands.iter().all(|b| *b <= Band::Lower) && !z_later.is_empty() && mean(&z_later) > mean(&z_first);
+    let toe_first =
+        first_bands.iter().all(|b| *b <= Band::Lower) && !z_later.is_empty() && mean(&z_later) > mean(&z_first);
     let slid = r.end == EndState::GlobalSliding;
     let seconds = t0.elapsed().as_secs_f64();
     let rows = [

@@ -490,7 +490,12 @@ pub fn extreme_cases() -> [ExtremeCase; 8] {
             layered_top_uz(&[(0.0, h, rho, oedometric_modulus(c.young, 0.499))]),
             1e-5,
         ),
-        case("perturbation-near-limit", "perturbation 0.49: column (distorted elements, measured 5.9e-5)", column, 2e-4),
+        case(
+            "perturbation-near-limit",
+            "perturbation 0.49: column (distorted elements, measured 5.9e-5)",
+            column,
+            2e-4,
+        ),
         case("aspect-1-50", "aspect ratio 1:50: column", column, 1e-5),
         case(
             "contrast-modulus-1e4",
