@@ -17,6 +17,8 @@
 //! - the published values ([`PAPER_MAX_ABS_UZ`], [`ACADS_SLIDE_BISHOP`], ...);
 //! - the paper slope's slip circle ([`SLIP_CIRCLE`]) and its strength;
 //! - the tolerances that a test and `cdem reproduce` both apply;
+//! - every row of the validation table ([`ROWS`], [`rows`], [`row`]): to add
+//!   a row, see the comment above [`ROWS`];
 //! - the committed meshes of the paper slope by refinement ([`SLOPE_MESHES`]),
 //!   which the performance figures ([`crate::harness::perf`]) and the benches
 //!   use; perf's LEM cases and paper slope are [`LEM_PAPER_SLOPE_EXPLICIT`],
@@ -216,8 +218,10 @@ pub struct Reference {
 }
 
 impl Reference {
-    /// The validation row comparing `ours` with this value; a NaN
-    /// `tolerance` makes a reported-only row.
+    /// An asserted row comparing `ours` with this value, outside the table's
+    /// registry ([`ROWS`]): the table lists it as not in the registry (a
+    /// failure) until a [`RowSpec`] names it; tests make their rows with
+    /// [`row`] instead. A NaN `tolerance` is never met.
     pub fn check(&self, case: &str, quantity: &str, ours: f64, tolerance: f64, seconds: f64) -> Check {
         Check::new(case, quantity, ours, self.value, tolerance, self.source, seconds)
     }
