@@ -5,7 +5,9 @@
 
 use cdem::drivers::{run_scene, RunResult};
 use cdem::harness::registry::{self as reg, column_szz, column_uz, measured_top_uz, CONFINED_COLUMN};
-use cdem::harness::report::Check;
+use cdem::harness::validation::{
+    column_base_stress, column_element_stress_error, column_merged_row, column_springs_rows,
+};
 use cdem::scene::{JointMode, Scene};
 
 const H: f64 = CONFINED_COLUMN.height;
@@ -20,76 +22,24 @@ fn run(scene: &Scene) -> RunResult {
     r
 }
 
-/// Base stress from the bottom reactions: sum (f_int - f_ext)_z / area.
-fn base_stress(r: &RunResult) -> f64 {
-    let m = &r.model;
-    let mut rz = 0.0;
-    for i in 0..m.n_nodes() {
-        if m.x0[i][2].abs() < 1e-9 && m.fixed[3 * i + 2] {
-            rz += r.state.f_int[3 * i + 2] - m.f_ext[3 * i + 2];
-        }
-    }
-    -rz / CONFINED_COLUMN.area
-}
-
-/// Largest relative error of the element sigma_zz against the exact value at
-/// the element centroid.
-fn element_stress_error(r: &RunResult) -> f64 {
-    let m = &r.model;
-    let stress = r.stress.as_ref().unwrap();
-    (0..m.elements.len())
-        .map(|e| {
-            let c = m.elements.corners(e);
-            let zc = c.iter().map(|&i| m.x0[i as usize][2]).sum::<f64>() / c.len() as f64;
-            ((stress[e][2] - column_szz(zc)) / column_szz(zc)).abs()
-        })
-        .fold(0.0, f64::max)
-}
-
 #[test]
 fn column_with_stiff_springs_within_one_percent() {
     let r = run(&scene(reg::COLUMN));
-    let (uz, exact) = (measured_top_uz(&r), column_uz(H));
-    let err_u = ((uz - exact) / exact).abs();
-    let err_base = ((base_stress(&r) - column_szz(0.0)) / column_szz(0.0)).abs();
-    let err_el = element_stress_error(&r);
-    println!("springs: top u_z {uz:.5e} (exact {exact:.5e}, err {err_u:.2e}); base {:.5e} (err {err_base:.2e}); element sigma_zz max err {err_el:.2e}", base_stress(&r));
-    let t = r.summary.wall_s;
-    cdem::harness::report::record(
-        "column_springs",
-        &[
-            Check::new(
-                "column, springs E_j/L=1e11",
-                "top u_z (m)",
-                uz,
-                exact,
-                reg::TOL_COLUMN_SPRINGS,
-                reg::COLUMN_MD,
-                t,
-            ),
-            Check::new(
-                "column, springs E_j/L=1e11",
-                "base sigma_zz from reactions (Pa)",
-                base_stress(&r),
-                column_szz(0.0),
-                reg::TOL_COLUMN_SPRINGS,
-                reg::COLUMN_MD,
-                t,
-            ),
-            Check::new(
-                "column, springs E_j/L=1e11",
-                "max element sigma_zz error vs centroid value",
-                err_el,
-                0.0,
-                reg::TOL_COLUMN_SPRINGS,
-                reg::COLUMN_MD,
-                t,
-            ),
-        ],
-    );
+    let rows = column_springs_rows(&r);
+    for c in &rows {
+        println!("springs: {} {:.5e} (exact {:.5e}, err {:.2e})", c.quantity, c.ours, c.reference, c.rel_error());
+    }
+    cdem::harness::report::record("column_springs", &rows);
+    // Top u_z: within 1 % (the joints' series compliance, references/column.md).
+    let err_u = ((measured_top_uz(&r) - column_uz(H)) / column_uz(H)).abs();
     assert!(err_u < reg::TOL_COLUMN_SPRINGS, "top displacement off by {:.3} %", 100.0 * err_u);
-    assert!(err_base < reg::TOL_COLUMN_SPRINGS, "base stress off by {:.3} %", 100.0 * err_base);
-    assert!(err_el < reg::TOL_COLUMN_SPRINGS, "element stress off by {:.3} %", 100.0 * err_el);
+    // Stresses: statically determinate, so independent of the joints: to the
+    // convergence tolerance.
+    let err_base = ((column_base_stress(&r) - column_szz(0.0)) / column_szz(0.0)).abs();
+    assert!(err_base < reg::TOL_COLUMN_STRESS, "base stress off by {err_base:.2e}");
+    let err_el = column_element_stress_error(&r);
+    assert!(err_el < reg::TOL_COLUMN_STRESS, "element stress off by {err_el:.2e}");
+    assert!(rows.iter().all(|c| c.passed()), "{rows:?}");
 }
 
 #[test]
@@ -121,20 +71,9 @@ fn column_with_merged_interfaces_is_exact_to_solver_tolerance() {
     let err = ((uz - exact) / exact).abs();
     println!(
         "merged: top u_z {uz:.6e} (exact {exact:.6e}, err {err:.2e}); element sigma_zz max err {:.2e}",
-        element_stress_error(&r)
+        column_element_stress_error(&r)
     );
-    cdem::harness::report::record(
-        "column_merged",
-        &[Check::new(
-            "column, merged",
-            "top u_z (m)",
-            uz,
-            exact,
-            reg::TOL_COLUMN_MERGED,
-            reg::COLUMN_MD,
-            r.summary.wall_s,
-        )],
-    );
+    cdem::harness::report::record("column_merged", &[column_merged_row(&r)]);
     assert!(err < reg::TOL_COLUMN_MERGED, "top displacement off by {err:.2e}");
-    assert!(element_stress_error(&r) < reg::TOL_COLUMN_MERGED);
+    assert!(column_element_stress_error(&r) < reg::TOL_COLUMN_MERGED);
 }

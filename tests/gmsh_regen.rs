@@ -4,7 +4,8 @@
 //! `.geo` with a committed `.msh` beside it) into a temporary directory and the result must
 //! equal the committed `.msh` (connectivity, tags and groups exactly, node
 //! coordinates within 1e-9 of the model size). Without gmsh on PATH the test
-//! is skipped with a note, except in CI (`CI=true`), where gmsh must run.
+//! is skipped with a note and a visible `skipped` row in the validation table,
+//! except in CI (`CI=true`), where gmsh must run.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -45,9 +46,12 @@ fn skip_without_gmsh(what: &str) -> bool {
 
 #[test]
 fn committed_case_meshes_match_their_geo() {
+    let spec = cdem::harness::registry::row("meshes/regenerated");
     if skip_without_gmsh("the regeneration check") {
+        cdem::harness::report::record("gmsh_regen", &[spec.skipped("gmsh is not on PATH (it must be in CI)")]);
         return;
     }
+    let t0 = std::time::Instant::now();
     let geos = case_geos();
     assert!(!geos.is_empty(), "no .geo under verification/cases/*/");
     let dir = std::env::temp_dir().join(format!("cdem-gmsh-regen-{}", std::process::id()));
@@ -69,6 +73,14 @@ fn committed_case_meshes_match_their_geo() {
         }
     }
     let _ = std::fs::remove_dir_all(&dir);
+    let ours = format!("{} of {} meshes equal", geos.len() - failures.len(), geos.len());
+    let row = spec.compared(
+        &ours,
+        &format!("{} of {} meshes equal", geos.len(), geos.len()),
+        failures.is_empty(),
+        t0.elapsed().as_secs_f64(),
+    );
+    cdem::harness::report::record("gmsh_regen", &[row]);
     assert!(failures.is_empty(), "committed meshes differ from their .geo:\n{}", failures.join("\n"));
 }
 

@@ -5,7 +5,10 @@
 //! Physics asserted: the first springs to fail lie where the elastic K_i
 //! (eq. 22) is below 1; with the cohesion gone the friction-only eq. 21 of
 //! the elastic state is below 1, so the mass must slide, and it does
-//! (global sliding), although the LEM gives FS 1.089. The sequence (zones of
+//! (global sliding), although the LEM gives FS 1.089; and the paper's order
+//! holds: the K_i < 1 zones a and c (the paper's ab and cd) are fully failed
+//! before the K_i >= 1 zones b and d (bc and de), then the mass slides
+//! (row `slope-failure/order-vs-paper`). The sequence (zones of
 //! the surface in the order they first fail and are fully failed) is an insta
 //! snapshot. Zones: the surface cut where the elastic K_i crosses 1, lettered
 //! from the toe. Writes target/figures/fig10-*.png.
@@ -130,6 +133,45 @@ fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
     for line in &sequence {
         println!("{line}");
     }
+    // The paper (Fig. 10): discontinuities in ab and cd first, then in bc and
+    // de, then the whole mass slides. Our zones a-d play ab-de
+    // (docs/method.md section 4.3): the K_i < 1 zones among them must be
+    // fully failed before the K_i >= 1 zones, and then the mass slides.
+    let paper_zones = zones.len().min(4);
+    let order: Vec<usize> = {
+        let mut z: Vec<usize> = (0..zones.len()).collect();
+        z.sort_by_key(|&z| (rank(&last, z), z));
+        z
+    };
+    let weak_last = (0..paper_zones).filter(|&z| zones[z].0).map(|z| rank(&last, z)).max();
+    let strong_first = (0..paper_zones).filter(|&z| !zones[z].0).map(|z| rank(&last, z)).min();
+    let paper_order = paper_zones == 4
+        && (0..paper_zones).all(|z| all_failed[z])
+        && matches!((weak_last, strong_first), (Some(w), Some(s)) if w < s)
+        && r.end == EndState::GlobalSliding;
+    let ours = format!(
+        "fully failed in the order {}; then {:?}",
+        order
+            .iter()
+            .map(|&z| format!("{} (K_i {})", (b'a' + z as u8) as char, if zones[z].0 { "< 1" } else { ">= 1" }))
+            .collect::<Vec<_>>()
+            .join(", "),
+        r.end
+    );
+    let rows = [
+        cdem::harness::validation::snapshot_row(
+            "slope-failure/snapshot",
+            &sequence,
+            cdem::harness::validation::SLOPE_FAILURE_SNAPSHOT,
+            0.0,
+        ),
+        reg::row("slope-failure/order-vs-paper")
+            .compared(&ours, "ab and cd first, then bc and de, then the mass slides", paper_order, 0.0)
+            .with_note("zones a-d play ab-de; zone e (crest) is ours, see references/paper.md"),
+    ];
+    cdem::harness::report::record("progressive_slope", &rows);
+    println!("{ours}: matches the paper's order: {paper_order}");
+    assert!(paper_order, "the paper's order: K_i < 1 zones fail first, then K_i >= 1, then the slide: {ours}");
     insta::assert_yaml_snapshot!("slope_failure_sequence", sequence);
 
     // Fig. 10: horizontal and vertical displacement since phase 1 at three

@@ -1,5 +1,5 @@
-//! Physical-time runs obey Coulomb friction (references/column.md, "Rigid
-//! block on a plane" in shared/references.md): a block on a plane inclined at
+//! Physical-time runs obey Coulomb friction (references/sliding-block.md):
+//! a block on a plane inclined at
 //! theta with friction angle phi and no cohesion stays at rest if theta < phi
 //! and otherwise slides with acceleration g (sin theta - cos theta tan phi).
 //!
@@ -57,7 +57,8 @@ fn block_below_the_friction_angle_stays_at_rest() {
     // At rest: only elastic wobble. The static shear-spring displacement is
     // W sin(theta) / K_s = 24525 N x 0.259 / 4e9 N/m = 1.6e-6 m; sliding at
     // even 1 % of g would move 0.5 x 0.098 x 0.25 = 1.2e-2 m.
-    assert!(x.abs() < 1e-5, "block moved {x} m");
+    cdem::harness::report::record("sliding_block_15", &[reg::row("block/at-rest-15").value(x, 0.0, 0.0)]);
+    assert!(x.abs() < reg::TOL_BLOCK_AT_REST, "block moved {x} m");
 }
 
 #[test]
@@ -66,17 +67,6 @@ fn block_above_the_friction_angle_slides_with_the_coulomb_acceleration() {
     let (x, t) = slide(30.0, 0.5);
     let a = 2.0 * x / (t * t);
     println!("theta 30 deg, phi 20 deg: a = {a:.4} m/s^2 (analytic {analytic:.4})");
-    cdem::harness::report::record(
-        "sliding_block",
-        &[cdem::harness::report::Check::new(
-            "block on plane, theta 30, phi 20",
-            "acceleration (m/s^2)",
-            a,
-            analytic,
-            0.02,
-            reg::SLIDING_BLOCK_MD,
-            0.0,
-        )],
-    );
-    assert!(((a - analytic) / analytic).abs() < 0.02, "a = {a}, analytic {analytic}");
+    cdem::harness::report::record("sliding_block_30", &[reg::row("block/acceleration-30").value(a, analytic, 0.0)]);
+    assert!(((a - analytic) / analytic).abs() < reg::TOL_SLIDING_BLOCK, "a = {a}, analytic {analytic}");
 }

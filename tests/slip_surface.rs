@@ -1,5 +1,5 @@
-//! Eq. 21 and 22 on the LEM critical surface of the paper slope (DESIGN.md
-//! section 4), on the conforming mesh verification/cases/slope-slip/ whose
+//! Eq. 21 and 22 on the LEM critical surface of the paper slope (docs/method.md
+//! section 2.10), on the conforming mesh verification/cases/slope-slip/ whose
 //! interface "slip" is the Bishop critical circle. The paper: LEM 1.084, eq. 21
 //! from its CDEM 1.086 (references/paper.md); the LEM value here is our
 //! Bishop on the same circle (references/lem.md, cross-checked with pySlope).
@@ -14,7 +14,6 @@ use cdem::analysis::slip::{from_springs, from_stresses};
 use cdem::analysis::{safety_factors, sign_segments, Segment, SurfacePoint};
 use cdem::harness::figures::{line_plot, section_contour, Scale, Series};
 use cdem::harness::registry::{self as reg, MIN_SEGMENT, PAPER_EQ21_K, PAPER_LEM_FS, SLIP_CIRCLE};
-use cdem::harness::report::Check;
 use cdem::harness::section::element_mean_displacement;
 use cdem::lem::evaluate_circle;
 use cdem::lem::Circle;
@@ -25,7 +24,7 @@ fn segments(p: &[SurfacePoint], k_i: &[f64]) -> Vec<Segment> {
 }
 
 fn describe(seg: &[Segment]) -> Vec<String> {
-    seg.iter().map(|g| format!("{} from {:.0} m to {:.0} m", if g.sign > 0 { "+" } else { "-" }, g.s0, g.s1)).collect()
+    cdem::harness::validation::describe_segments(seg)
 }
 
 #[test]
@@ -61,40 +60,6 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
     println!("eq. 21 CDEM stresses: {:.4} ({:+.2} %)", k_cdem.k, 100.0 * rel(k_cdem.k));
     println!("eq. 21 FEM stresses: {:.4} ({:+.2} %)", k_fem.k, 100.0 * rel(k_fem.k));
 
-    let t = run.summary.wall_s;
-    cdem::harness::report::record(
-        "slip_surface",
-        &[
-            Check::new(
-                "paper slope, slip circle",
-                "eq. 21 K from CDEM springs vs LEM Bishop",
-                k_springs.k,
-                fs_lem,
-                reg::TOL_EQ21_VS_LEM,
-                reg::LEM_MD,
-                t,
-            ),
-            Check::new(
-                "paper slope, slip circle",
-                "eq. 21 K from CDEM stresses vs FEM stresses",
-                k_cdem.k,
-                k_fem.k,
-                0.005,
-                reg::FEM_SAME_MESH,
-                t,
-            ),
-            Check::new(
-                "paper slope, slip circle",
-                "eq. 21 K from FEM stresses vs LEM Bishop",
-                k_fem.k,
-                fs_lem,
-                f64::NAN,
-                reg::LEM_MD,
-                t,
-            ),
-            PAPER_LEM_FS.check("paper slope, slip circle", "LEM Bishop vs paper LEM", fs_lem, f64::NAN, t),
-        ],
-    );
     // The paper's comparison: eq. 21 from the CDEM spring forces on the
     // conforming interface against the LEM on the same surface.
     assert!(rel(k_springs.k).abs() < reg::TOL_EQ21_VS_LEM, "eq. 21 (springs) {:.4} vs LEM {fs_lem:.4}", k_springs.k);
@@ -113,7 +78,23 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
     );
     assert_eq!(signs(&seg_cdem), signs(&seg_fem), "CDEM and FEM give the same sign segments");
     assert_eq!(signs(&seg_springs), signs(&seg_fem), "spring- and stress-based segments agree");
-    insta::assert_yaml_snapshot!("ki_segments_cdem_springs", describe(&seg_springs));
+    // The rows (recorded before the snapshot assertion, so that a changed
+    // snapshot shows as a failing `differs` row too).
+    let rows =
+        cdem::harness::validation::slip_rows(k_springs.k, k_cdem.k, k_fem.k, fs_lem, &seg_springs, run.summary.wall_s);
+    cdem::harness::report::record("slip_surface", &rows);
+    for c in &rows {
+        println!("{}: {:?}", c.id, c.status());
+    }
+    // Our Bishop on the circle is the paper's LEM within 0.01 (references/lem.md).
+    assert!((fs_lem - PAPER_LEM_FS.value).abs() <= reg::TOL_PAPER_LEM_FS_ABSOLUTE, "LEM {fs_lem}");
+    // The literal sign pattern differs from the paper's (references/paper.md):
+    // a reported `differs` row until a convention that reproduces it is found.
+    assert_eq!(rows[6].status(), cdem::harness::report::Status::Differs);
+    insta::assert_yaml_snapshot!(
+        "ki_segments_cdem_springs",
+        cdem::harness::validation::describe_segments(&seg_springs)
+    );
 
     // Fig. 9: the surface on the section, and K_i from toe to crest.
     std::fs::create_dir_all("target/figures").unwrap();

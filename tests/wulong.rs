@@ -339,7 +339,12 @@ fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_
             .unwrap();
         }
     }
-    insta::assert_yaml_snapshot!("wulong_failure_sequence", sequence);
+    let snapshot_row = cdem::harness::validation::snapshot_row(
+        "wulong/snapshot",
+        &sequence,
+        cdem::harness::validation::WULONG_SNAPSHOT,
+        t0.elapsed().as_secs_f64(),
+    );
 
     // Mean z of the cracks that open at the first crack stage and of those opening later.
     let first_crack_stage = *first_open.values().min().expect("cracks open");
@@ -363,6 +368,32 @@ fn wulong_cracks_open_at_the_toe_first_and_climb_blocks_detach_no_slide_without_
     );
     // Cracks open first below mid-height, then climb: the ones opening later lie higher.
     let first_bands: Vec<Band> = first_open.iter().filter(|(_, k)| **k == first_crack_stage).map(|(b, _)| *b).collect();
+    let toe_first =
+        first_bands.iter().all(|b| *b <= Band::Lower) && !z_later.is_empty() && mean(&z_later) > mean(&z_first);
+    let slid = r.end == EndState::GlobalSliding;
+    let seconds = t0.elapsed().as_secs_f64();
+    let rows = [
+        snapshot_row,
+        cdem::harness::registry::row("wulong/toe-first").compared(
+            &format!(
+                "first cracks in {}, mean z {:.1} m; later ones mean z {:.1} m",
+                names(&first_bands),
+                mean(&z_first),
+                mean(&z_later)
+            ),
+            "cracks at the lower slope first, then more cracks higher (stages 1-2)",
+            toe_first,
+            seconds,
+        ),
+        cdem::harness::registry::row("wulong/no-slide").compared(
+            &format!("{:?}", r.end),
+            "no global slide: the slide needed the rain, which the model has not",
+            !slid,
+            seconds,
+        ),
+    ];
+    cdem::harness::report::record("wulong", &rows);
+    insta::assert_yaml_snapshot!("wulong_failure_sequence", sequence);
     assert!(
         first_bands.iter().all(|b| *b <= Band::Lower),
         "the first cracks open below mid-height, not in {first_bands:?}"

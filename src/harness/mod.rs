@@ -16,3 +16,4 @@ pub mod report;
 pub mod reproduce;
 pub mod section;
 pub mod study;
+pub mod validation;
