@@ -136,7 +136,7 @@ fn main() -> ExitCode {
 /// `cdem run`: phase 1 and, for a scene with `[failure]`, phase 2.
 fn run(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
     let scene = Scene::load(scene_path)?;
-    let budget = scene.solver.max_steps + scene.failure.as_ref().map_or(0, |f| f.max_steps);
+    let budget = scene.solver.max_steps.unwrap_or(0) + scene.failure.as_ref().map_or(0, |f| f.max_steps.unwrap_or(0));
     let pb = progress_bar(budget);
     let result = cdem::drivers::run_scene(&scene, &mut |step, ratio| {
         pb.set_position(step as u64);
