@@ -141,6 +141,16 @@ pub const SLOPE_SLIP: Case = Case {
     source: LEM_MD,
 };
 
+/// The paper slope and slip circle with a stronger slip surface (phi = 35 deg):
+/// a stable slope with a weak interface.
+pub const SLOPE_SLIP_STABLE: Case = Case {
+    name: "paper slope, slip circle, phi 35 deg",
+    input: "verification/cases/slope-slip/slope-slip-stable.toml",
+    checks: "phase 2 ends in Equilibrium although springs fail (tests/progressive_slope.rs); the stable slope of \
+             `cdem srm` (tests/srm.rs)",
+    source: LEM_MD,
+};
+
 /// The Wulong landslide (Figs. 11-14).
 pub const WULONG: Case = Case {
     name: "Wulong",
@@ -184,11 +194,12 @@ pub const SLIDING_BLOCK: Case = Case {
 };
 
 /// Every case above (the extreme suite is [`extreme_cases`]).
-pub const CASES: [Case; 9] = [
+pub const CASES: [Case; 10] = [
     COLUMN,
     COLUMN_MERGED,
     SLOPE,
     SLOPE_SLIP,
+    SLOPE_SLIP_STABLE,
     WULONG,
     LEM_ACADS_1A,
     LEM_PAPER_SLOPE,
