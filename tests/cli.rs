@@ -217,3 +217,43 @@ fn an_unknown_group_lists_the_groups_there_are() {
     assert!(msg.contains("its surface groups:") && msg.contains("\"xmin\"") && msg.contains("\"bottom\""), "{msg}");
     let _ = std::fs::remove_file(&scene);
 }
+
+/// `cdem srm` on the block on a plane with cohesion: exit 0, `srm.json` with
+/// `fs`, `bracket` (width at most 0.01, holding the analytic FS 1.2630 of
+/// references/srm.md) and the trials, `mechanism.vtu` and `mechanism.png`.
+#[test]
+fn srm_writes_fs_bracket_trials_and_the_mechanism() {
+    let out = temp_dir("srm");
+    let o = Command::new(env!("CARGO_BIN_EXE_cdem"))
+        .args(["srm", "verification/cases/block-srm/block-srm-cohesion.toml", "--out", out.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(out.join("srm.json")).unwrap()).unwrap();
+    let (lo, hi) = (j["bracket"][0].as_f64().unwrap(), j["bracket"][1].as_f64().unwrap());
+    let analytic = cdem::harness::registry::BLOCK_SRM_COHESION_SET.fs();
+    assert!(hi - lo <= 0.01 + 1e-12 && lo <= analytic && analytic <= hi, "[{lo}, {hi}] against {analytic}");
+    assert!((j["fs"].as_f64().unwrap() - 0.5 * (lo + hi)).abs() < 1e-12);
+    let trials = j["trials"].as_array().unwrap();
+    assert!(trials.len() >= 3);
+    for t in trials {
+        for key in ["factor", "outcome", "steps", "max_displacement"] {
+            assert!(!t[key].is_null(), "trial without {key}: {t}");
+        }
+    }
+    assert!(out.join("mechanism.vtu").exists() && out.join("mechanism.png").exists());
+    assert!(String::from_utf8_lossy(&o.stdout).contains("FS = 1.26"), "{}", String::from_utf8_lossy(&o.stdout));
+}
+
+/// `cdem srm` on a scene without a breakable interface: exit 2, naming the key.
+#[test]
+fn srm_without_a_breakable_interface_is_invalid_input() {
+    let (scene, out) = edited_column("srm-none", |t| t);
+    let o = Command::new(env!("CARGO_BIN_EXE_cdem"))
+        .args(["srm", scene.to_str().unwrap(), "--out", out.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("scene key `interface`"));
+    assert!(!out.exists());
+}

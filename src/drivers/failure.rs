@@ -11,8 +11,9 @@
 //!   times the mean elastic displacement), or the largest displacement
 //!   passes the scene's optional `sliding_displacement`
 //!   ([`EndState::GlobalSliding`]);
-//! - the step budget: `max_steps`, by default the model's characteristic
-//!   response time `N_r` ([`crate::solver::budget`]) ([`EndState::Undecided`]).
+//! - the step budget: `max_steps`, by default [`PHASE2_RESPONSE_TIMES`] times
+//!   the model's characteristic response time `N_r` ([`crate::solver::budget`])
+//!   ([`EndState::Undecided`]).
 //!
 //! Phase 2 keeps node-block masses (`[failure] block_mass`, default true;
 //! [`phase_solver`]). They stay stable when springs fail: see
@@ -93,10 +94,20 @@ pub fn phase_solver(
     Ok(Solver::with_masses(model, solver_params.clone(), block)?)
 }
 
-/// The step budget of phase 2: `params.max_steps` or `N_r` with the
-/// solver's damping and masses.
+/// The default budget of phase 2 (and of each strength-reduction trial), in
+/// response times `N_r`. Near the limit the response slows down: on the
+/// stable slope (`SLOPE_SLIP_STABLE`) the trial at F = 1.6357 reached
+/// Equilibrium after 17,967 steps = 4.2 `N_r`; on the block on a plane the
+/// trial at F = 1.2109 (0.16 % below the analytic FS) after 6,050 steps =
+/// 3.0 `N_r` (references/srm.md).
+pub const PHASE2_RESPONSE_TIMES: usize = 10;
+
+/// The step budget of phase 2: `params.max_steps` or
+/// [`PHASE2_RESPONSE_TIMES`] `N_r` with the solver's damping and masses.
 pub fn phase_budget(solver: &Solver, model: &Model, params: &FailureParams) -> usize {
-    params.max_steps.unwrap_or_else(|| response_steps(model, solver.params(), solver.inertia().is_block()))
+    params.max_steps.unwrap_or_else(|| {
+        PHASE2_RESPONSE_TIMES * response_steps(model, solver.params(), solver.inertia().is_block())
+    })
 }
 
 /// The sliding rule of phase 2 from the elastic displacement `u_elastic`.

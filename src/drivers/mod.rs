@@ -4,13 +4,16 @@
 //!
 //! - [`run`]: the CDEM run of a scene: phase 1 (elastic) and, for a scene
 //!   with `[failure]`, phase 2 ([`failure`]: breakable joints, stages, end state);
-//! - [`fem`]: the implicit FEM reference on the scene's continuous mesh.
+//! - [`fem`]: the implicit FEM reference on the scene's continuous mesh;
+//! - [`srm`]: strength reduction, the factor of safety (`cdem srm`).
 
 pub mod failure;
 pub mod fem;
 pub mod run;
+pub mod srm;
 
 pub use crate::summary::EndState;
 pub use failure::{FailureResult, Stage, StageSnapshots};
 pub use fem::solve_scene as solve_fem;
 pub use run::{build_model, read_mesh, run_scene, run_watched, Frame, Phase, Progress, RunResult, Watch};
+pub use srm::{run_srm, SrmProgress, SrmResult, Trial};

@@ -14,4 +14,5 @@ pub mod registry;
 pub mod report;
 pub mod reproduce;
 pub mod section;
+pub mod srm;
 pub mod study;

@@ -47,6 +47,8 @@ pub const SLIDING_BLOCK_MD: &str = "references/sliding-block.md";
 pub const SKFEM_MD: &str = "references/skfem.md";
 /// The scikit-fem solution itself (read by tests/fem.rs).
 pub const SKFEM_JSON: &str = "references/skfem.json";
+/// Strength reduction: the block on a plane (analytic) and the slopes.
+pub const SRM_MD: &str = "references/srm.md";
 /// The Wulong landslide: the paper's and ours.
 pub const WULONG_MD: &str = "references/wulong.md";
 /// The source of a row whose reference is the implicit FEM on the same mesh.
@@ -193,8 +195,24 @@ pub const SLIDING_BLOCK: Case = Case {
     source: SLIDING_BLOCK_MD,
 };
 
+/// Strength reduction of a block on a plane, friction only (theta 30, phi 35).
+pub const BLOCK_SRM_FRICTION: Case = Case {
+    name: "block on plane SRM, theta 30, phi 35, c 0",
+    input: "verification/cases/block-srm/block-srm-friction.toml",
+    checks: "`cdem srm` FS against the analytic block on a plane within 1 % (tests/srm.rs)",
+    source: SRM_MD,
+};
+
+/// Strength reduction of a block on a plane with cohesion (theta 25, phi 20, c 5 kPa, ductile).
+pub const BLOCK_SRM_COHESION: Case = Case {
+    name: "block on plane SRM, theta 25, phi 20, c 5 kPa",
+    input: "verification/cases/block-srm/block-srm-cohesion.toml",
+    checks: "`cdem srm` FS against the analytic block on a plane within 1 % (tests/srm.rs, tests/cli.rs)",
+    source: SRM_MD,
+};
+
 /// Every case above (the extreme suite is [`extreme_cases`]).
-pub const CASES: [Case; 10] = [
+pub const CASES: [Case; 12] = [
     COLUMN,
     COLUMN_MERGED,
     SLOPE,
@@ -205,6 +223,8 @@ pub const CASES: [Case; 10] = [
     LEM_PAPER_SLOPE,
     LEM_PAPER_SLOPE_EXPLICIT,
     SLIDING_BLOCK,
+    BLOCK_SRM_FRICTION,
+    BLOCK_SRM_COHESION,
 ];
 
 // ---------------------------------------------------------------------------
@@ -546,3 +566,41 @@ mod tests {
         assert!((slip_circle_radius() - 43.408).abs() < 1e-3);
     }
 }
+
+// ---------------------------------------------------------------------------
+// Strength reduction of a block on a plane (references/srm.md).
+
+/// A block of weight `W` on a plane inclined at `theta`, contact area `A`,
+/// cohesion `c` and friction angle `phi`.
+#[derive(Debug, Clone, Copy)]
+pub struct BlockOnPlane {
+    pub theta_deg: f64,
+    pub phi_deg: f64,
+    /// Pa.
+    pub cohesion: f64,
+    /// N.
+    pub weight: f64,
+    /// m^2.
+    pub area: f64,
+}
+
+impl BlockOnPlane {
+    /// The factor of safety `(c A + W cos(theta) tan(phi)) / (W sin(theta))`.
+    pub fn fs(&self) -> f64 {
+        let (th, phi) = (self.theta_deg.to_radians(), self.phi_deg.to_radians());
+        (self.cohesion * self.area + self.weight * th.cos() * phi.tan()) / (self.weight * th.sin())
+    }
+}
+
+/// The block of the SRM cases: 1 m^3 at 2500 kg/m^3 (W = 24525 N), A = 1 m^2.
+const SRM_BLOCK_WEIGHT: f64 = 2500.0 * GRAVITY;
+
+/// [`BLOCK_SRM_FRICTION`]: FS = tan 35 / tan 30 = 1.2128.
+pub const BLOCK_SRM_FRICTION_SET: BlockOnPlane =
+    BlockOnPlane { theta_deg: 30.0, phi_deg: 35.0, cohesion: 0.0, weight: SRM_BLOCK_WEIGHT, area: 1.0 };
+/// [`BLOCK_SRM_COHESION`]: FS = 1.2630.
+pub const BLOCK_SRM_COHESION_SET: BlockOnPlane =
+    BlockOnPlane { theta_deg: 25.0, phi_deg: 20.0, cohesion: 5000.0, weight: SRM_BLOCK_WEIGHT, area: 1.0 };
+/// `cdem srm` on the block against the analytic FS: 1 % (the bracket is
+/// 0.01 wide, so its midpoint is within 0.4 % of any FS inside it).
+pub const TOL_SRM_BLOCK: f64 = 0.01;

@@ -127,8 +127,9 @@ pub struct Output {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct FailureParams {
-    /// Step limit of phase 2. Default: the model's characteristic response
-    /// time `N_r` with the phase-2 masses ([`crate::solver::budget`]).
+    /// Step limit of phase 2 (and of each `cdem srm` trial). Default: 10
+    /// times the model's characteristic response time `N_r` with the phase-2
+    /// masses (`solver::budget`; `drivers::failure::PHASE2_RESPONSE_TIMES`).
     pub max_steps: Option<usize>,
     /// Record a stage row every this many steps. Default 500.
     pub stage_every: usize,

@@ -49,8 +49,8 @@ pub struct SolverParams {
     /// characteristic response time `N_r` ([`crate::solver::budget`]):
     /// `C n_c sqrt(kappa)` steps, `n_c` the elements across the model,
     /// `kappa` the joint-to-rock stiffness ratio with lumped masses (1 with
-    /// node-block masses), `C` measured per damping kind (100 viscous, 1000
-    /// local); at least 2000.
+    /// node-block masses), `C` measured per damping kind (100 viscous, 1500
+    /// local, 500 kinetic); at least 2000.
     pub max_steps: Option<usize>,
 }
 
