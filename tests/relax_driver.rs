@@ -102,22 +102,49 @@ fn sliding_by_rate_fires_when_the_mean_displacement_grows_without_decay_and_not_
     let (model, mut solver, mut state, tol) = column();
     let reference = vec![0.0; 3 * model.n_nodes()];
     let weights = model.mass.clone();
-    let rule = Sliding { reference: &reference, weights: &weights, window: 20, windows: 3, floor: 0.0, displacement: f64::INFINITY };
-    let r = relax(&mut solver, &model, &mut state, &StopRules { sliding: Some(rule), ..rules(tol, 100_000) }, &mut unobserved)
-        .unwrap();
+    let rule = Sliding {
+        reference: &reference,
+        weights: &weights,
+        window: 20,
+        windows: 3,
+        floor: 0.0,
+        displacement: f64::INFINITY,
+    };
+    let r = relax(
+        &mut solver,
+        &model,
+        &mut state,
+        &StopRules { sliding: Some(rule), ..rules(tol, 100_000) },
+        &mut unobserved,
+    )
+    .unwrap();
     assert_eq!(r.stop, Stop::Converged, "a relaxing model is not sliding");
 
     // Pulled by a load that never balances (no fixities): a rigid motion that
     // accelerates, so each window's increment is larger than the last.
     let (mut model, _, _, _) = column();
     model.fixed.fill(false);
-    let mut solver = Solver::new(&model, cdem::solver::SolverParams { block_mass: Some(false), ..Default::default() }).unwrap();
+    let mut solver =
+        Solver::new(&model, cdem::solver::SolverParams { block_mass: Some(false), ..Default::default() }).unwrap();
     let mut state = State::new(&model);
     let reference = vec![0.0; 3 * model.n_nodes()];
     let weights = model.mass.clone();
-    let rule = Sliding { reference: &reference, weights: &weights, window: 20, windows: 3, floor: 0.0, displacement: f64::INFINITY };
-    let r = relax(&mut solver, &model, &mut state, &StopRules { sliding: Some(rule), ..rules(tol, 100_000) }, &mut unobserved)
-        .unwrap();
+    let rule = Sliding {
+        reference: &reference,
+        weights: &weights,
+        window: 20,
+        windows: 3,
+        floor: 0.0,
+        displacement: f64::INFINITY,
+    };
+    let r = relax(
+        &mut solver,
+        &model,
+        &mut state,
+        &StopRules { sliding: Some(rule), ..rules(tol, 100_000) },
+        &mut unobserved,
+    )
+    .unwrap();
     // Windows 2, 3 and 4 are the first three that can be compared with a previous one.
     assert_eq!((r.stop, r.steps), (Stop::Sliding, 80));
 }

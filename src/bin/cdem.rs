@@ -197,10 +197,12 @@ fn srm(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
             pb.tick();
             let _ = ratio;
         }
-        SrmProgress::TrialEnd(t) => pb.suspend(|| eprintln!(
-            "F = {:.4}: {:?} after {} steps, max displacement {:.3e} m, {} failed springs",
-            t.factor, t.outcome, t.steps, t.max_displacement, t.failed_springs
-        )),
+        SrmProgress::TrialEnd(t) => pb.suspend(|| {
+            eprintln!(
+                "F = {:.4}: {:?} after {} steps, max displacement {:.3e} m, {} failed springs",
+                t.factor, t.outcome, t.steps, t.max_displacement, t.failed_springs
+            )
+        }),
     })?;
     pb.finish_and_clear();
     cdem::output::write_srm(&result, &model, out)?;

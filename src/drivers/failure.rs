@@ -32,8 +32,8 @@ use crate::error::Error;
 use crate::model::Model;
 use crate::physics::spring::SpringStatus;
 use crate::scene::FailureParams;
-use crate::solver::relax::max_displacement_since;
 use crate::solver::budget::{crossing_elements, response_steps};
+use crate::solver::relax::max_displacement_since;
 use crate::solver::{relax, RunReport, Sliding, Solver, SolverParams, State, StepView, Stop, StopRules};
 use crate::summary::{EndState, FailedSprings};
 
@@ -105,9 +105,9 @@ pub const PHASE2_RESPONSE_TIMES: usize = 10;
 /// The step budget of phase 2: `params.max_steps` or
 /// [`PHASE2_RESPONSE_TIMES`] `N_r` with the solver's damping and masses.
 pub fn phase_budget(solver: &Solver, model: &Model, params: &FailureParams) -> usize {
-    params.max_steps.unwrap_or_else(|| {
-        PHASE2_RESPONSE_TIMES * response_steps(model, solver.params(), solver.inertia().is_block())
-    })
+    params
+        .max_steps
+        .unwrap_or_else(|| PHASE2_RESPONSE_TIMES * response_steps(model, solver.params(), solver.inertia().is_block()))
 }
 
 /// The sliding rule of phase 2 from the elastic displacement `u_elastic`.

@@ -146,14 +146,30 @@ impl Reduction {
         let mut solver = phase_solver(solver, &self.model, &self.scene.solver, &self.params)?;
         let mut state = self.elastic.clone();
         let options = failure::Options { vtk: false, history_every: usize::MAX };
-        let r = failure::run(&mut solver, &self.model, &mut state, &self.params, self.scene.solver.tolerance, options, watch)?;
+        let r = failure::run(
+            &mut solver,
+            &self.model,
+            &mut state,
+            &self.params,
+            self.scene.solver.tolerance,
+            options,
+            watch,
+        )?;
         let since: Vec<f64> = state.u.iter().zip(&r.u_elastic).map(|(a, b)| a - b).collect();
         let trial = Trial {
             factor,
             outcome: r.end,
             steps: r.report.steps,
-            max_displacement: since.chunks(3).map(|d| (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()).fold(0.0, f64::max),
-            failed_springs: state.springs.status.iter().filter(|s| **s != crate::physics::spring::SpringStatus::Intact).count(),
+            max_displacement: since
+                .chunks(3)
+                .map(|d| (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt())
+                .fold(0.0, f64::max),
+            failed_springs: state
+                .springs
+                .status
+                .iter()
+                .filter(|s| **s != crate::physics::spring::SpringStatus::Intact)
+                .count(),
         };
         Ok((trial, since))
     }
@@ -182,13 +198,14 @@ pub fn run_srm(scene: &Scene, progress: &mut dyn FnMut(SrmProgress)) -> Result<(
     let mut trials = Vec::new();
     let (mut lo, mut hi) = (None::<f64>, None::<f64>);
     let mut mechanism = None;
-    let mut run = |f: f64, trials: &mut Vec<Trial>, progress: &mut dyn FnMut(SrmProgress)| -> Result<(bool, Vec<f64>), Error> {
-        progress(SrmProgress::TrialStart(f));
-        let (t, since) = red.trial(f, &mut Forward(progress))?;
-        progress(SrmProgress::TrialEnd(&t));
-        trials.push(t);
-        Ok((t.stable(), since))
-    };
+    let mut run =
+        |f: f64, trials: &mut Vec<Trial>, progress: &mut dyn FnMut(SrmProgress)| -> Result<(bool, Vec<f64>), Error> {
+            progress(SrmProgress::TrialStart(f));
+            let (t, since) = red.trial(f, &mut Forward(progress))?;
+            progress(SrmProgress::TrialEnd(&t));
+            trials.push(t);
+            Ok((t.stable(), since))
+        };
     // Bracketing.
     let mut f = 1.0;
     loop {

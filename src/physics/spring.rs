@@ -66,7 +66,12 @@ impl Strength {
     /// The strength reduced by a factor `f` (strength reduction):
     /// `T / f`, `c / f`, `tan(phi) / f`.
     pub fn reduced(&self, f: f64) -> Self {
-        Self { tensile: self.tensile / f, cohesion: self.cohesion / f, tan_phi: self.tan_phi / f, ductile: self.ductile }
+        Self {
+            tensile: self.tensile / f,
+            cohesion: self.cohesion / f,
+            tan_phi: self.tan_phi / f,
+            ductile: self.ductile,
+        }
     }
 }
 

@@ -94,11 +94,8 @@ impl Sliding<'_> {
         let mean = self.mean_displacement(u);
         let increment = mean - watch.last_mean;
         let first = steps == self.window.max(1);
-        watch.rising = if !first && increment > self.floor && increment >= watch.last_increment {
-            watch.rising + 1
-        } else {
-            0
-        };
+        watch.rising =
+            if !first && increment > self.floor && increment >= watch.last_increment { watch.rising + 1 } else { 0 };
         watch.last_mean = mean;
         watch.last_increment = increment;
         watch.rising >= self.windows
