@@ -55,7 +55,7 @@ fn run_of_a_failure_scene_writes_both_phases_and_the_end_state() {
     assert_eq!(steps(&s), steps(p1) + steps(p2), "top-level steps are both phases'");
     assert_eq!(s["unbalanced_ratio"], p2["unbalanced_ratio"], "the top-level ratio is the end's, not phase 1's");
     assert!(p2["unbalanced_ratio"].as_f64().unwrap() > 1e-5, "a sliding mass is out of balance");
-    // Decided by the displacement rate (docs/method.md section 2.9): 2,500
+    // Decided by the displacement rate (docs/method.md section 2.9): 2,160
     // phase-2 steps and 2e-2 m, well before the scene's 0.5 m bound.
     let moved = p2["max_displacement"].as_f64().unwrap();
     assert!(moved > 1e-3 && moved < 0.5 && steps(p2) <= 5000, "{moved} m after {} steps", steps(p2));

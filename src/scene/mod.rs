@@ -139,7 +139,7 @@ pub struct FailureParams {
     pub sliding_displacement: Option<f64>,
     /// Node-block masses in phase 2 (default true; only with mass scaling and
     /// viscous or kinetic damping, lumped masses otherwise). On the paper's
-    /// slip-surface case they decide in 2,500 steps where lumped masses take
+    /// slip-surface case they decide in 2,160 steps where lumped masses take
     /// 57,820 (references/performance.md).
     pub block_mass: bool,
 }
