@@ -7,7 +7,7 @@ use cdem::drivers::run_scene;
 /// perturbed slope, as raw bits.
 fn fingerprint(threads: usize) -> Vec<u64> {
     let mut scene = cdem::harness::registry::SLOPE.scene().unwrap();
-    scene.solver.max_steps = 2000;
+    scene.solver.max_steps = Some(2000);
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
     let r = pool.install(|| run_scene(&scene, &mut |_, _| {})).unwrap();
     let s = &r.summary;

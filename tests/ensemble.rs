@@ -8,6 +8,7 @@ use std::process::Command;
 use cdem::analysis::stats::normal_cdf;
 use cdem::drivers::ensemble::{aggregate, mean_critical_circle, run_members, EnsembleInput};
 use cdem::error::SceneError;
+use cdem::harness::registry as reg;
 
 /// kappa of FS = kappa c for the circular segment of
 /// `verification/ensemble/cohesive-segment.toml` (ground z = s x, circle
@@ -45,6 +46,13 @@ fn mean_and_probability_of_failure_match_the_analytic_normal_case() {
     println!(
         "n {n}: mean {:.5} CI {:?} (exact {mean}); sd {:.5} (exact {sd}); PF {:.5} CI {:?} (exact {pf:.5})",
         fs.mean, fs.mean_ci95, fs.std_dev, r.probability_of_failure, r.pf_ci95
+    );
+    cdem::harness::report::record(
+        "ensemble_segment",
+        &[
+            reg::row("ensemble/segment/mean").value(fs.mean, mean, 0.0),
+            reg::row("ensemble/segment/pf").value(r.probability_of_failure, pf, 0.0),
+        ],
     );
     assert_eq!(s.members_without_fs, 0);
     // The LEM's own error on this circle at 200 slices is ~2e-4 (second order,

@@ -119,7 +119,7 @@ fn exercise_msh(bytes: &[u8]) {
 
 fn exercise_scene(text: &str, base: &Path) {
     if let Ok(mut scene) = Scene::from_toml(text, base, Path::new("fuzz.toml")) {
-        scene.solver.max_steps = scene.solver.max_steps.min(20);
+        scene.solver.max_steps = Some(scene.solver.max_steps.unwrap_or(20).min(20));
         let _ = cdem::drivers::run_scene(&scene, &mut |_, _| {});
     }
 }

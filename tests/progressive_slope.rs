@@ -180,3 +180,25 @@ fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
     let files = stage_figures(&run, &snapshots, Path::new("target/figures"), "fig10").unwrap();
     assert_eq!(files.len(), 6);
 }
+
+/// A stable slope with a weak interface: the slip circle with phi = 35 deg
+/// (LEM Bishop 1.93 on that circle, references/lem.md). The springs that
+/// violate eq. 17-18 at the elastic state fail, the load they shed is carried,
+/// and phase 2 ends in Equilibrium well inside its step budget.
+#[test]
+fn a_stable_slope_with_a_weak_interface_reaches_equilibrium_in_phase_2() {
+    let scene = reg::SLOPE_SLIP_STABLE.scene().unwrap();
+    let run = run_watched(&scene, &mut StageSnapshots::default()).unwrap();
+    let r = run.failure.as_ref().expect("phase 2 ran");
+    let p2 = run.summary.phase2.as_ref().unwrap();
+    println!(
+        "phase 2: {:?} after {} steps, {} shear / {} tension failures, {:.3e} m since phase 1",
+        r.end, p2.steps, p2.failed_springs.shear, p2.failed_springs.tension, p2.max_displacement
+    );
+    assert_eq!(r.end, EndState::Equilibrium);
+    assert!(p2.failed_springs.shear + p2.failed_springs.tension > 0, "some springs fail: the interface is weak");
+    assert!(r.report.unbalanced_ratio < scene.solver.tolerance);
+    // Settles: the displacement since phase 1 is a small fraction of the
+    // elastic settlement (4.2e-2 m).
+    assert!(p2.max_displacement < 5e-3, "{}", p2.max_displacement);
+}

@@ -67,7 +67,10 @@ fn sliding_is_checked_on_its_cadence_and_after_the_tolerance() {
     // A reference 1 m away from the rest state: the displacement "since" it
     // is 1 m from the first step, so the rule fires at its first check.
     let reference = vec![1.0; 3 * model.n_nodes()];
-    let sliding = Sliding { reference: &reference, displacement: 0.5, check_every: 7 };
+    let weights = model.mass.clone();
+    // The fixed bound alone (the rate rule needs more windows than the run has).
+    let sliding =
+        Sliding { reference: &reference, weights: &weights, window: 7, windows: 1000, floor: 0.0, displacement: 0.5 };
     let r = relax(
         &mut solver,
         &model,
@@ -84,9 +87,64 @@ fn sliding_is_checked_on_its_cadence_and_after_the_tolerance() {
         &mut solver,
         &model,
         &mut state,
-        &StopRules { sliding: Some(Sliding { check_every: 1, ..sliding }), ..rules(f64::INFINITY, 1000) },
+        &StopRules { sliding: Some(Sliding { window: 1, ..sliding }), ..rules(f64::INFINITY, 1000) },
         &mut unobserved,
     )
     .unwrap();
     assert_eq!((r.stop, r.steps), (Stop::Converged, 1));
+}
+
+#[test]
+fn sliding_by_rate_fires_when_the_mean_displacement_grows_without_decay_and_not_when_it_relaxes() {
+    // A reference that recedes: the model relaxes from rest toward its
+    // gravity settlement, so its mean displacement since the rest state
+    // grows at first and then stops; a decaying rate never meets the rule.
+    let (model, mut solver, mut state, tol) = column();
+    let reference = vec![0.0; 3 * model.n_nodes()];
+    let weights = model.mass.clone();
+    let rule = Sliding {
+        reference: &reference,
+        weights: &weights,
+        window: 20,
+        windows: 3,
+        floor: 0.0,
+        displacement: f64::INFINITY,
+    };
+    let r = relax(
+        &mut solver,
+        &model,
+        &mut state,
+        &StopRules { sliding: Some(rule), ..rules(tol, 100_000) },
+        &mut unobserved,
+    )
+    .unwrap();
+    assert_eq!(r.stop, Stop::Converged, "a relaxing model is not sliding");
+
+    // Pulled by a load that never balances (no fixities): a rigid motion that
+    // accelerates, so each window's increment is larger than the last.
+    let (mut model, _, _, _) = column();
+    model.fixed.fill(false);
+    let mut solver =
+        Solver::new(&model, cdem::solver::SolverParams { block_mass: Some(false), ..Default::default() }).unwrap();
+    let mut state = State::new(&model);
+    let reference = vec![0.0; 3 * model.n_nodes()];
+    let weights = model.mass.clone();
+    let rule = Sliding {
+        reference: &reference,
+        weights: &weights,
+        window: 20,
+        windows: 3,
+        floor: 0.0,
+        displacement: f64::INFINITY,
+    };
+    let r = relax(
+        &mut solver,
+        &model,
+        &mut state,
+        &StopRules { sliding: Some(rule), ..rules(tol, 100_000) },
+        &mut unobserved,
+    )
+    .unwrap();
+    // Windows 2, 3 and 4 are the first three that can be compared with a previous one.
+    assert_eq!((r.stop, r.steps), (Stop::Sliding, 80));
 }

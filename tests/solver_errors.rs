@@ -41,7 +41,7 @@ fn automatic_step_is_stable_with_every_damping_on_the_column() {
     for damping in [DampingKind::Local, DampingKind::Viscous, DampingKind::Kinetic] {
         let mut params = scene.solver.clone();
         params.damping = damping;
-        params.max_steps = 3000;
+        params.max_steps = Some(3000);
         let mut solver = Solver::new(&model, params).unwrap();
         let mut state = State::new(&model);
         let rep = solver.relax(&model, &mut state, 10).unwrap();
@@ -64,7 +64,7 @@ fn non_finite_state_names_step_and_node() {
 fn running_out_of_steps_is_reported_not_converged() {
     let (scene, model) = column();
     let mut params = scene.solver.clone();
-    params.max_steps = 50;
+    params.max_steps = Some(50);
     let mut solver = Solver::new(&model, params).unwrap();
     let mut state = State::new(&model);
     let rep = solver.relax(&model, &mut state, 10).unwrap();

@@ -29,6 +29,13 @@ enum Command {
         #[arg(long, default_value = "out")]
         out: PathBuf,
     },
+    /// Factor of safety by strength reduction (c/F, tan(phi)/F, T/F on the breakable interfaces,
+    /// bracketing then bisection to a width of 0.01): DIR/srm.json, mechanism.vtu, mechanism.png.
+    Srm {
+        scene: PathBuf,
+        #[arg(long, default_value = "out-srm")]
+        out: PathBuf,
+    },
     /// Regenerate a case's .msh from its .geo with gmsh (gmsh must be on PATH).
     Mesh {
         geo: PathBuf,
@@ -178,6 +185,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Run { scene, out } => run(&scene, &out),
         Command::Fem { scene, out } => fem(&scene, &out),
+        Command::Srm { scene, out } => srm(&scene, &out),
         Command::Mesh { geo, out } => {
             let out = out.unwrap_or_else(|| geo.with_extension("msh"));
             reached(cdem::mesh::gmsh::regenerate(&geo, &out).map(|_| eprintln!("wrote {}", out.display())))
@@ -212,7 +220,7 @@ fn main() -> ExitCode {
 /// `cdem run`: phase 1 and, for a scene with `[failure]`, phase 2.
 fn run(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
     let scene = Scene::load(scene_path)?;
-    let budget = scene.solver.max_steps + scene.failure.as_ref().map_or(0, |f| f.max_steps);
+    let budget = scene.solver.max_steps.unwrap_or(0) + scene.failure.as_ref().map_or(0, |f| f.max_steps.unwrap_or(0));
     let pb = progress_bar(budget);
     let result = cdem::drivers::run_scene(&scene, &mut |step, ratio| {
         pb.set_position(step as u64);
@@ -298,6 +306,53 @@ fn ensemble(args: EnsembleArgs) -> cdem::Result<()> {
     let text = cdem::output::ensemble::markdown(&s);
     let _ = writeln!(std::io::stdout().lock(), "{text}-> {}", out.display());
     Ok(())
+}
+
+/// `cdem srm`: strength reduction; progress per trial on the terminal.
+fn srm(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
+    use cdem::drivers::SrmProgress;
+    let scene = Scene::load(scene_path)?;
+    let pb = progress_bar(0);
+    let (result, model) = cdem::drivers::run_srm(&scene, &mut |p| match p {
+        SrmProgress::Elastic(steps) => pb.suspend(|| eprintln!("elastic phase: {steps} steps")),
+        SrmProgress::TrialStart(f) => pb.set_message(format!("trial F = {f:.4}")),
+        SrmProgress::Step(step, ratio) => {
+            pb.set_position(step as u64);
+            pb.tick();
+            let _ = ratio;
+        }
+        SrmProgress::TrialEnd(t) => pb.suspend(|| {
+            eprintln!(
+                "F = {:.4}: {:?} after {} steps, max displacement {:.3e} m, {} failed springs",
+                t.factor, t.outcome, t.steps, t.max_displacement, t.failed_springs
+            )
+        }),
+    })?;
+    pb.finish_and_clear();
+    cdem::output::write_srm(&result, &model, out)?;
+    cdem::harness::srm::mechanism_png(&result, &model, &out.join("mechanism.png"))?;
+    let [lo, hi] = result.bracket;
+    let show = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.4}"));
+    match result.fs {
+        Some(fs) => println!(
+            "FS = {fs:.3} (bracket [{}, {}], {} trials of at most {} steps, {:.1} s) -> {}",
+            show(lo),
+            show(hi),
+            result.trials.len(),
+            result.trial_budget,
+            result.wall_s,
+            out.display()
+        ),
+        None => println!(
+            "no bracket: stable up to {}, unstable from {} ({} trials, {:.1} s) -> {}",
+            show(lo),
+            show(hi),
+            result.trials.len(),
+            result.wall_s,
+            out.display()
+        ),
+    }
+    Ok(if result.fs.is_some() { Outcome::Reached } else { Outcome::OutOfSteps })
 }
 
 /// `cdem fem`: the implicit FEM reference on the continuous mesh.

@@ -4,9 +4,20 @@
 //! eq. 17-18 and the model relaxes again ([`crate::solver::relax()`]) until:
 //! - a new equilibrium: the unbalanced ratio below the tolerance
 //!   ([`EndState::Equilibrium`]);
-//! - global sliding: the largest displacement since phase 1 passes
-//!   `sliding_displacement` ([`EndState::GlobalSliding`]);
-//! - the step budget `max_steps` ([`EndState::Undecided`]).
+//! - global sliding: the mass-weighted mean displacement since phase 1 keeps
+//!   growing at a rate that does not decay ([`Sliding`]: [`SLIDING_WINDOWS`]
+//!   windows of [`SLIDING_WINDOW_CROSSINGS`] `n_c` steps each, `n_c` the
+//!   elements across the model, with increments above [`SLIDING_FLOOR`]
+//!   times the mean elastic displacement), or the largest displacement
+//!   passes the scene's optional `sliding_displacement`
+//!   ([`EndState::GlobalSliding`]);
+//! - the step budget: `max_steps`, by default [`PHASE2_RESPONSE_TIMES`] times
+//!   the model's characteristic response time `N_r` ([`crate::solver::budget`])
+//!   ([`EndState::Undecided`]).
+//!
+//! Phase 2 keeps node-block masses (`[failure] block_mass`, default true;
+//! [`phase_solver`]). They stay stable when springs fail: see
+//! [`crate::solver::block_mass`].
 //!
 //! Each spring's first failure step is recorded, and a stage row (failed
 //! springs by kind, displacement since phase 1, kinetic energy) every
@@ -21,8 +32,9 @@ use crate::error::Error;
 use crate::model::Model;
 use crate::physics::spring::SpringStatus;
 use crate::scene::FailureParams;
+use crate::solver::budget::{crossing_elements, response_steps};
 use crate::solver::relax::max_displacement_since;
-use crate::solver::{relax, RunReport, Sliding, Solver, State, StepView, Stop, StopRules};
+use crate::solver::{relax, RunReport, Sliding, Solver, SolverParams, State, StepView, Stop, StopRules};
 use crate::summary::{EndState, FailedSprings};
 
 /// A milestone of phase 2.
@@ -59,6 +71,60 @@ pub struct Options {
     pub history_every: usize,
 }
 
+/// Window of the sliding rule, in element crossings `n_c`.
+pub const SLIDING_WINDOW_CROSSINGS: f64 = 10.0;
+/// Windows in a row with a non-decaying displacement rate that decide sliding.
+pub const SLIDING_WINDOWS: usize = 3;
+/// Increments of the mean displacement per window below this fraction of the
+/// mean elastic displacement (phase 1) are rest.
+pub const SLIDING_FLOOR: f64 = 1e-3;
+
+/// The solver of phase 2: the phase-1 `solver` if its masses are the ones
+/// `params.block_mass` asks for, else a new one with `solver_params`.
+pub fn phase_solver(
+    solver: Solver,
+    model: &Model,
+    solver_params: &SolverParams,
+    params: &FailureParams,
+) -> Result<Solver, Error> {
+    let block = params.block_mass && Solver::block_masses_possible(solver_params);
+    if solver.inertia().is_block() == block {
+        return Ok(solver);
+    }
+    Ok(Solver::with_masses(model, solver_params.clone(), block)?)
+}
+
+/// The default budget of phase 2 (and of each strength-reduction trial), in
+/// response times `N_r`. Near the limit the response slows down: on the
+/// stable slope (`SLOPE_SLIP_STABLE`) the trial at F = 1.6357 reached
+/// Equilibrium after 17,967 steps = 4.2 `N_r`; on the block on a plane the
+/// trial at F = 1.2109 (0.16 % below the analytic FS) after 6,050 steps =
+/// 3.0 `N_r` (references/srm.md).
+pub const PHASE2_RESPONSE_TIMES: usize = 10;
+
+/// The step budget of phase 2: `params.max_steps` or
+/// [`PHASE2_RESPONSE_TIMES`] `N_r` with the solver's damping and masses.
+pub fn phase_budget(solver: &Solver, model: &Model, params: &FailureParams) -> usize {
+    params
+        .max_steps
+        .unwrap_or_else(|| PHASE2_RESPONSE_TIMES * response_steps(model, solver.params(), solver.inertia().is_block()))
+}
+
+/// The sliding rule of phase 2 from the elastic displacement `u_elastic`.
+pub fn sliding_rule<'a>(model: &'a Model, u_elastic: &'a [f64], params: &FailureParams) -> Sliding<'a> {
+    let mut rule = Sliding {
+        reference: u_elastic,
+        weights: &model.mass,
+        window: ((SLIDING_WINDOW_CROSSINGS * crossing_elements(model)).ceil() as usize).max(10),
+        windows: SLIDING_WINDOWS,
+        floor: 0.0,
+        displacement: params.sliding_displacement.unwrap_or(f64::INFINITY),
+    };
+    let zero = vec![0.0; u_elastic.len()];
+    rule.floor = SLIDING_FLOOR * Sliding { reference: &zero, ..rule }.mean_displacement(u_elastic);
+    rule
+}
+
 /// Runs phase 2 from the elastic `state` (which it advances).
 pub fn run(
     solver: &mut Solver,
@@ -77,8 +143,8 @@ pub fn run(
     let mut framed = None::<FailedSprings>;
     let rules = StopRules {
         tolerance,
-        max_steps: params.max_steps,
-        sliding: Some(Sliding { reference: &u_elastic, displacement: params.sliding_displacement, check_every: 10 }),
+        max_steps: phase_budget(solver, model, params),
+        sliding: Some(sliding_rule(model, &u_elastic, params)),
         history_every: options.history_every,
     };
     let mut observe = |view: &StepView| {

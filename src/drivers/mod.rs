@@ -6,16 +6,19 @@
 //!   with `[failure]`, phase 2 ([`failure`]: breakable joints, stages, end state);
 //! - [`fem`]: the implicit FEM reference on the scene's continuous mesh;
 //! - [`lem`]: the LEM input of a LEM file or of a scene's `[lem]` table;
-//! - [`ensemble`]: Monte-Carlo members of a scene or LEM file, and their statistics.
+//! - [`ensemble`]: Monte-Carlo members of a scene or LEM file, and their statistics;
+//! - [`srm`]: strength reduction, the factor of safety (`cdem srm`).
 
 pub mod ensemble;
 pub mod failure;
 pub mod fem;
 pub mod lem;
 pub mod run;
+pub mod srm;
 
 pub use crate::summary::EndState;
 pub use failure::{FailureResult, Stage, StageSnapshots};
 pub use fem::solve_scene as solve_fem;
 pub use lem::{load_lem_input, scene_lem_input};
 pub use run::{build_model, read_mesh, run_scene, run_watched, Frame, Phase, Progress, RunResult, Watch};
+pub use srm::{run_srm, SrmProgress, SrmResult, Trial};

@@ -123,7 +123,7 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
     let mut frames = Vec::new();
     let rules = StopRules {
         tolerance: scene.solver.tolerance,
-        max_steps: scene.solver.max_steps,
+        max_steps: solver.step_budget(&model),
         sliding: None,
         history_every: scene.output.history_every,
     };
@@ -146,6 +146,7 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
     let failure = match &scene.failure {
         Some(params) => {
             let options = failure::Options { vtk: scene.output.vtk, history_every: scene.output.history_every };
+            solver = failure::phase_solver(solver, &model, &scene.solver, params)?;
             Some(failure::run(&mut solver, &model, &mut state, params, scene.solver.tolerance, options, watch)?)
         }
         None => None,

@@ -15,5 +15,6 @@ pub mod registry;
 pub mod report;
 pub mod reproduce;
 pub mod section;
+pub mod srm;
 pub mod study;
 pub mod validation;

@@ -49,6 +49,10 @@ pub const SLIDING_BLOCK_MD: &str = "references/sliding-block.md";
 pub const SKFEM_MD: &str = "references/skfem.md";
 /// The scikit-fem solution itself (read by tests/fem.rs).
 pub const SKFEM_JSON: &str = "references/skfem.json";
+/// Strength reduction: the block on a plane (analytic) and the slopes.
+pub const SRM_MD: &str = "references/srm.md";
+/// Ensembles: the analytic case, member seeds, determinism, the SLURM run.
+pub const ENSEMBLE_MD: &str = "references/ensemble.md";
 /// The Wulong landslide: the paper's and ours.
 pub const WULONG_MD: &str = "references/wulong.md";
 /// The performance goals and measurements.
@@ -149,6 +153,16 @@ pub const SLOPE_SLIP: Case = Case {
     source: LEM_MD,
 };
 
+/// The paper slope and slip circle with a stronger slip surface (phi = 35 deg):
+/// a stable slope with a weak interface.
+pub const SLOPE_SLIP_STABLE: Case = Case {
+    name: "paper slope, slip circle, phi 35 deg",
+    input: "verification/cases/slope-slip/slope-slip-stable.toml",
+    checks: "phase 2 ends in Equilibrium although springs fail (tests/progressive_slope.rs); the stable slope of \
+             `cdem srm` (tests/srm.rs)",
+    source: LEM_MD,
+};
+
 /// The Wulong landslide (Figs. 11-14).
 pub const WULONG: Case = Case {
     name: "Wulong",
@@ -191,17 +205,36 @@ pub const SLIDING_BLOCK: Case = Case {
     source: SLIDING_BLOCK_MD,
 };
 
+/// Strength reduction of a block on a plane, friction only (theta 30, phi 35).
+pub const BLOCK_SRM_FRICTION: Case = Case {
+    name: "block on plane SRM, theta 30, phi 35, c 0",
+    input: "verification/cases/block-srm/block-srm-friction.toml",
+    checks: "`cdem srm` FS against the analytic block on a plane within 1 % (tests/srm.rs)",
+    source: SRM_MD,
+};
+
+/// Strength reduction of a block on a plane with cohesion (theta 25, phi 20, c 5 kPa, ductile).
+pub const BLOCK_SRM_COHESION: Case = Case {
+    name: "block on plane SRM, theta 25, phi 20, c 5 kPa",
+    input: "verification/cases/block-srm/block-srm-cohesion.toml",
+    checks: "`cdem srm` FS against the analytic block on a plane within 1 % (tests/srm.rs, tests/cli.rs)",
+    source: SRM_MD,
+};
+
 /// Every case above (the extreme suite is [`extreme_cases`]).
-pub const CASES: [Case; 9] = [
+pub const CASES: [Case; 12] = [
     COLUMN,
     COLUMN_MERGED,
     SLOPE,
     SLOPE_SLIP,
+    SLOPE_SLIP_STABLE,
     WULONG,
     LEM_ACADS_1A,
     LEM_PAPER_SLOPE,
     LEM_PAPER_SLOPE_EXPLICIT,
     SLIDING_BLOCK,
+    BLOCK_SRM_FRICTION,
+    BLOCK_SRM_COHESION,
 ];
 
 // ---------------------------------------------------------------------------
@@ -655,6 +688,12 @@ pub const ROWS: &[RowSpec] = &[
     // The sliding block (tests/sliding_block.rs).
     spec("block/at-rest-15", "block on plane, theta 15, phi 20", "displacement in 0.5 s (m)", Asserted(TOL_BLOCK_AT_REST), SLIDING_BLOCK_MD, "tests/sliding_block.rs"),
     spec("block/acceleration-30", "block on plane, theta 30, phi 20", "acceleration (m/s^2)", Asserted(TOL_SLIDING_BLOCK), SLIDING_BLOCK_MD, "tests/sliding_block.rs"),
+    // Strength reduction on the block on a plane (tests/srm.rs).
+    spec("srm/block-friction", "SRM block on plane, theta 30, phi 35, c 0", "FS (strength reduction)", Asserted(TOL_SRM_BLOCK), SRM_MD, "tests/srm.rs"),
+    spec("srm/block-cohesion", "SRM block on plane, theta 25, phi 20, c 5 kPa", "FS (strength reduction)", Asserted(TOL_SRM_BLOCK), SRM_MD, "tests/srm.rs"),
+    // Ensembles against an exactly normal FS (tests/ensemble.rs).
+    spec("ensemble/segment/mean", "ensemble: cohesive segment, c normal, 4000 members", "mean FS vs exact 1.2", Asserted(TOL_ENSEMBLE_MEAN), ENSEMBLE_MD, "tests/ensemble.rs"),
+    spec("ensemble/segment/pf", "ensemble: cohesive segment, c normal, 4000 members", "P(FS < 1) vs exact Phi(-4/3)", Asserted(TOL_ENSEMBLE_PF), ENSEMBLE_MD, "tests/ensemble.rs"),
     // The committed meshes (tests/gmsh_regen.rs).
     spec("meshes/regenerated", "committed meshes", "equal to what gmsh makes of their .geo", Compared(true), GEO_FILES, "tests/gmsh_regen.rs"),
     // Performance, reported against the goals (tests/performance.rs).
@@ -748,3 +787,50 @@ mod tests {
         assert!((slip_circle_radius() - 43.408).abs() < 1e-3);
     }
 }
+
+// ---------------------------------------------------------------------------
+// Strength reduction of a block on a plane (references/srm.md).
+
+/// A block of weight `W` on a plane inclined at `theta`, contact area `A`,
+/// cohesion `c` and friction angle `phi`.
+#[derive(Debug, Clone, Copy)]
+pub struct BlockOnPlane {
+    pub theta_deg: f64,
+    pub phi_deg: f64,
+    /// Pa.
+    pub cohesion: f64,
+    /// N.
+    pub weight: f64,
+    /// m^2.
+    pub area: f64,
+}
+
+impl BlockOnPlane {
+    /// The factor of safety `(c A + W cos(theta) tan(phi)) / (W sin(theta))`.
+    pub fn fs(&self) -> f64 {
+        let (th, phi) = (self.theta_deg.to_radians(), self.phi_deg.to_radians());
+        (self.cohesion * self.area + self.weight * th.cos() * phi.tan()) / (self.weight * th.sin())
+    }
+}
+
+/// The block of the SRM cases: 1 m^3 at 2500 kg/m^3 (W = 24525 N), A = 1 m^2.
+const SRM_BLOCK_WEIGHT: f64 = 2500.0 * GRAVITY;
+
+/// [`BLOCK_SRM_FRICTION`]: FS = tan 35 / tan 30 = 1.2128.
+pub const BLOCK_SRM_FRICTION_SET: BlockOnPlane =
+    BlockOnPlane { theta_deg: 30.0, phi_deg: 35.0, cohesion: 0.0, weight: SRM_BLOCK_WEIGHT, area: 1.0 };
+/// [`BLOCK_SRM_COHESION`]: FS = 1.2630.
+pub const BLOCK_SRM_COHESION_SET: BlockOnPlane =
+    BlockOnPlane { theta_deg: 25.0, phi_deg: 20.0, cohesion: 5000.0, weight: SRM_BLOCK_WEIGHT, area: 1.0 };
+/// `cdem srm` on the block against the analytic FS: 1 % (the bracket is
+/// 0.01 wide, so its midpoint is within 0.4 % of any FS inside it).
+pub const TOL_SRM_BLOCK: f64 = 0.01;
+/// The ensemble's mean FS against the exact mean (references/ensemble.md):
+/// 0.4 %, the half-width of its 95 % Monte-Carlo interval at 4000 members
+/// (1.96 x 0.15 / sqrt(4000) / 1.2 = 0.39 %); the test also asserts that the
+/// exact value lies inside the interval itself.
+pub const TOL_ENSEMBLE_MEAN: f64 = 0.004;
+/// The ensemble's PF against the exact PF: 10 %, the relative half-width of
+/// its 95 % Wilson interval at 4000 members (0.0089 / 0.0912); the test also
+/// asserts that the exact value lies inside the interval itself.
+pub const TOL_ENSEMBLE_PF: f64 = 0.10;

@@ -90,11 +90,31 @@ pub struct StrengthSection {
     pub cohesion: f64,
     /// Friction angle `phi` (degrees, in [0, 90)), eq. 18.
     pub friction_angle: f64,
+    /// What failure does to the strength: `"brittle"` (default, the paper's:
+    /// cohesion and tensile strength lost) or `"ductile"` (kept).
+    #[serde(default)]
+    pub softening: Softening,
+}
+
+/// What a spring keeps of its strength once it has failed.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Softening {
+    /// Cohesion and tensile strength lost at failure (eq. 17-18 as in the paper).
+    #[default]
+    Brittle,
+    /// Strength kept: perfectly plastic Mohr-Coulomb with a tension cap.
+    Ductile,
 }
 
 impl From<StrengthSection> for crate::physics::spring::Strength {
     fn from(s: StrengthSection) -> Self {
-        Self { tensile: s.tensile, cohesion: s.cohesion, tan_phi: s.friction_angle.to_radians().tan() }
+        Self {
+            tensile: s.tensile,
+            cohesion: s.cohesion,
+            tan_phi: s.friction_angle.to_radians().tan(),
+            ductile: s.softening == Softening::Ductile,
+        }
     }
 }
 

@@ -9,6 +9,7 @@
 pub mod ensemble;
 pub mod fem;
 pub mod run;
+pub mod srm;
 pub mod vtk;
 
 use std::io::Write;
@@ -20,6 +21,7 @@ use crate::error::Error;
 
 pub use fem::write_fem;
 pub use run::write_run;
+pub use srm::write_srm;
 
 /// Writes `bytes` to `path` atomically (temporary file + rename).
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), Error> {

@@ -58,6 +58,21 @@ pub struct Strength {
     pub tensile: f64,
     pub cohesion: f64,
     pub tan_phi: f64,
+    /// Ductile: the strength is kept after failure ([`breakable_spring_force`]).
+    pub ductile: bool,
+}
+
+impl Strength {
+    /// The strength reduced by a factor `f` (strength reduction):
+    /// `T / f`, `c / f`, `tan(phi) / f`.
+    pub fn reduced(&self, f: f64) -> Self {
+        Self {
+            tensile: self.tensile / f,
+            cohesion: self.cohesion / f,
+            tan_phi: self.tan_phi / f,
+            ductile: self.ductile,
+        }
+    }
 }
 
 /// The immutable springs of a model, struct of arrays.
@@ -124,6 +139,12 @@ pub fn spring_contact_force(
 ///   reference follows the motion (it recloses with zero shear force);
 ///   closed carries compression and at most `P tan(phi)` of friction.
 ///
+/// Ductile strength (`strength.ductile`): failure changes the status (for
+/// the record) but not the strength. The normal force is capped at `T A`
+/// (no normal plastic displacement is kept: the cap is a limit on the
+/// force, not a memory), and the shear force at `P tan(phi) + c A` at every
+/// step, `P = max(-F_n, 0)`.
+///
 /// Plastic slip is updated so that `K_s (d_s - d_s^p)` equals the returned
 /// shear force.
 // One spring's geometry, stiffness, strength and state, passed by value to keep
@@ -141,6 +162,9 @@ pub fn breakable_spring_force(
     status: &mut SpringStatus,
 ) -> [f64; 3] {
     let (f_n, f_s) = spring_force(kn, ks, n, d, *slip);
+    if strength.ductile {
+        return ductile_spring_force(f_n, f_s, n, ks, area, strength, slip, status);
+    }
     let cohesion = match *status {
         SpringStatus::Intact => {
             if tension_cutoff(f_n, strength.tensile, area) {
@@ -165,6 +189,44 @@ pub fn breakable_spring_force(
             *status = SpringStatus::Shear;
             let scale = limit / fs_abs;
             let kept = f_s.map(|v| v * scale);
+            *slip = [0, 1, 2].map(|i| slip[i] + (f_s[i] - kept[i]) / ks);
+            kept
+        }
+    };
+    [0, 1, 2].map(|i| f_n * n[i] + f_s[i])
+}
+
+/// The ductile branch of [`breakable_spring_force`].
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn ductile_spring_force(
+    f_n: f64,
+    f_s: [f64; 3],
+    n: [f64; 3],
+    ks: f64,
+    area: f64,
+    strength: &Strength,
+    slip: &mut [f64; 3],
+    status: &mut SpringStatus,
+) -> [f64; 3] {
+    let cap = strength.tensile * area;
+    let f_n = if f_n > cap {
+        if *status == SpringStatus::Intact {
+            *status = SpringStatus::Tension;
+        }
+        cap
+    } else {
+        f_n
+    };
+    let fs_abs = (f_s[0] * f_s[0] + f_s[1] * f_s[1] + f_s[2] * f_s[2]).sqrt();
+    let f_s = match mohr_coulomb(f_n, fs_abs, strength.tan_phi, strength.cohesion, area) {
+        None => f_s,
+        Some(_) => {
+            if *status == SpringStatus::Intact {
+                *status = SpringStatus::Shear;
+            }
+            let limit = (-f_n).max(0.0) * strength.tan_phi + strength.cohesion * area;
+            let kept = f_s.map(|v| v * limit / fs_abs);
             *slip = [0, 1, 2].map(|i| slip[i] + (f_s[i] - kept[i]) / ks);
             kept
         }

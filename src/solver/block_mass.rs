@@ -19,9 +19,29 @@
 //! stability limit, the same guarantee the lumped Gershgorin masses give.
 //! Fixed components get a unit row and column (their velocity stays zero).
 //!
-//! Used in the elastic phase only: the blocks are built from the intact
-//! springs, and a broken spring only lowers `K`, so they stay stable, but
-//! they would couple the inertia of copies that have separated.
+//! The failure phase keeps the blocks built from the intact springs. The
+//! bound still holds because a spring's force, in every state, has a
+//! stiffness no larger than the intact spring's block `K_aa`:
+//! - intact: `K_aa` itself;
+//! - broken and open: zero force, zero stiffness;
+//! - reclosed in compression: the normal reference is never moved, so the
+//!   normal force restarts from zero along `K_n`; the shear reference
+//!   followed the motion while the spring was open, so the shear force
+//!   restarts from zero along `K_s`: `K_aa` again, from a zero force;
+//! - sliding: the shear force is the elastic trial scaled back by a factor
+//!   in `[0, 1]` and the slip increment is parallel to the kept force, so
+//!   the plastic work is not negative: sliding removes energy, never adds it.
+//!
+//! So the assembled stiffness of any failure state is at most the intact
+//! `K <= B + D`, and every mode stays at `safety` of its limit or below. Not
+//! covered by this quadratic-form bound: the friction limit `P tan(phi)`
+//! moves with the normal force, a non-symmetric coupling of size
+//! `tan(phi) K_n` between normal and shear increments. It is left to the
+//! solver's energy monitor, which has not fired on any case with block masses
+//! in phase 2 (the slip-surface slope, the stable slope, Wulong, the block on
+//! a plane). The blocks also couple the inertia of copies that have
+//! separated: that changes the fictitious path of the relaxation, not its
+//! equilibria (`M^-1 f = 0` if and only if `f = 0`).
 
 use nalgebra::DMatrix;
 use rayon::prelude::*;

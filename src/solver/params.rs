@@ -45,8 +45,13 @@ pub struct SolverParams {
     pub block_mass: Option<bool>,
     /// Convergence: `max |f_unbal| / max |f_ext|` below this. Default 1e-5.
     pub tolerance: f64,
-    /// Stop (not converged) after this many steps. Default 1 000 000.
-    pub max_steps: usize,
+    /// Stop (not converged) after this many steps. Default: the model's
+    /// characteristic response time `N_r` ([`crate::solver::budget`]):
+    /// `C n_c sqrt(kappa)` steps, `n_c` the elements across the model,
+    /// `kappa` the joint-to-rock stiffness ratio with lumped masses (1 with
+    /// node-block masses), `C` measured per damping kind (100 viscous, 1500
+    /// local, 500 kinetic); at least 2000.
+    pub max_steps: Option<usize>,
 }
 
 impl Default for SolverParams {
@@ -58,7 +63,7 @@ impl Default for SolverParams {
             mass_scaling: true,
             block_mass: None,
             tolerance: 1e-5,
-            max_steps: 1_000_000,
+            max_steps: None,
         }
     }
 }
@@ -87,7 +92,7 @@ impl SolverParams {
         if self.block_mass == Some(true) && !self.block_mass_possible() {
             return bad("block_mass", "needs mass_scaling = true and damping = \"viscous\"".into());
         }
-        if self.max_steps == 0 {
+        if self.max_steps == Some(0) {
             return bad("max_steps", "must be at least 1".into());
         }
         Ok(())

@@ -6,8 +6,12 @@
 //! The rules, checked after every step in this order:
 //! 1. **tolerance**: the unbalanced-force ratio is below `tolerance`
 //!    ([`Stop::Converged`]);
-//! 2. **sliding** (if given): every `check_every` steps, the largest
-//!    displacement since `reference` passes `displacement` ([`Stop::Sliding`]);
+//! 2. **sliding** (if given), checked at the end of every window of
+//!    `window` steps ([`Stop::Sliding`]): the mass-weighted mean displacement
+//!    since `reference` grew in each of the last `windows` windows by more
+//!    than `floor` and by at least as much as in the window before (the
+//!    displacement rate does not decay: a mass keeps moving), or the largest
+//!    displacement since `reference` passed `displacement`;
 //! 3. **budget**: `max_steps` steps taken ([`Stop::Budget`]);
 //! 4. **caller**: the observer returns `Break` ([`Stop::Caller`]).
 
@@ -29,14 +33,73 @@ pub enum Stop {
 }
 
 /// Global sliding: the mass keeps moving away from a reference state.
+///
+/// The measure is the mean displacement since `reference` weighted by
+/// `weights` (the physical node masses): a sliding mass moves a finite
+/// fraction of the model, a single loose block or the chatter of failed
+/// springs does not. At the end of every window its increment is compared
+/// with the previous window's; `windows` windows in a row with an increment
+/// above `floor` and not smaller than the one before decide sliding. A
+/// relaxing state has a decaying rate (its increments shrink) and so never
+/// meets the rule, whatever its displacement.
 #[derive(Debug, Clone, Copy)]
 pub struct Sliding<'a> {
     /// Displacement the motion is measured from (3 per node).
     pub reference: &'a [f64],
-    /// Bound on the largest nodal displacement since `reference` (m).
+    /// One weight per node for the mean (the physical masses).
+    pub weights: &'a [f64],
+    /// Window length (steps); the rule is checked at the end of each.
+    pub window: usize,
+    /// Windows in a row with a non-decaying increment that decide sliding.
+    pub windows: usize,
+    /// Increments of the mean displacement per window at or below this (m)
+    /// are rest, not motion.
+    pub floor: f64,
+    /// Also sliding when the largest nodal displacement since `reference`
+    /// passes this (m); `f64::INFINITY`: no such bound.
     pub displacement: f64,
-    /// Check every this many steps (the check reads every node).
-    pub check_every: usize,
+}
+
+/// The running state of the sliding rule.
+#[derive(Debug, Clone, Copy, Default)]
+struct SlidingWatch {
+    last_mean: f64,
+    last_increment: f64,
+    rising: usize,
+}
+
+impl Sliding<'_> {
+    /// Weighted mean displacement of `u` since the reference (m).
+    pub fn mean_displacement(&self, u: &[f64]) -> f64 {
+        let (mut sum, mut weight) = (0.0, 0.0);
+        for ((a, b), w) in u.chunks(3).zip(self.reference.chunks(3)).zip(self.weights) {
+            sum += w * ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt();
+            weight += w;
+        }
+        if weight > 0.0 {
+            sum / weight
+        } else {
+            0.0
+        }
+    }
+
+    /// The check at step `steps` of the relaxation: true if the mass slides.
+    fn slides(&self, watch: &mut SlidingWatch, u: &[f64], steps: usize) -> bool {
+        if !steps.is_multiple_of(self.window.max(1)) {
+            return false;
+        }
+        if self.displacement.is_finite() && max_displacement_since(u, self.reference) > self.displacement {
+            return true;
+        }
+        let mean = self.mean_displacement(u);
+        let increment = mean - watch.last_mean;
+        let first = steps == self.window.max(1);
+        watch.rising =
+            if !first && increment > self.floor && increment >= watch.last_increment { watch.rising + 1 } else { 0 };
+        watch.last_mean = mean;
+        watch.last_increment = increment;
+        watch.rising >= self.windows
+    }
 }
 
 /// When to stop, and how often to record a history row.
@@ -113,15 +176,14 @@ pub fn relax(
     let mut ratio = f64::INFINITY;
     let first = state.step;
     let mut stop = None;
+    let mut watch = SlidingWatch::default();
     while stop.is_none() {
         let (unbalanced, kinetic) = solver.step(model, state)?;
         let steps = state.step - first;
         ratio = solver.ratio(unbalanced);
         stop = if ratio < rules.tolerance {
             Some(Stop::Converged)
-        } else if rules.sliding.is_some_and(|s| {
-            steps.is_multiple_of(s.check_every) && max_displacement_since(&state.u, s.reference) > s.displacement
-        }) {
+        } else if rules.sliding.is_some_and(|s| s.slides(&mut watch, &state.u, steps)) {
             Some(Stop::Sliding)
         } else if steps >= rules.max_steps {
             Some(Stop::Budget)

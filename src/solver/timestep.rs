@@ -9,6 +9,20 @@ use crate::model::Model;
 
 /// Absolute row sums of the assembled stiffness, per node (max over its 3 rows).
 pub fn stiffness_row_sums(model: &Model) -> Vec<f64> {
+    max_of_rows(&component_row_sums(model, true))
+}
+
+/// Absolute row sums of the elements' stiffness alone, per node (max over its 3 rows).
+pub fn element_row_sums(model: &Model) -> Vec<f64> {
+    max_of_rows(&component_row_sums(model, false))
+}
+
+fn max_of_rows(rows: &[f64]) -> Vec<f64> {
+    rows.chunks(3).map(|r| r[0].max(r[1]).max(r[2])).collect()
+}
+
+/// Absolute row sums per component, of the elements and, if `springs`, the springs.
+fn component_row_sums(model: &Model, springs: bool) -> Vec<f64> {
     let mut rows = vec![0.0; 3 * model.n_nodes()];
     let el = &model.elements;
     for e in 0..el.len() {
@@ -23,7 +37,7 @@ pub fn stiffness_row_sums(model: &Model) -> Vec<f64> {
         }
     }
     let sp = &model.springs;
-    for s in 0..sp.len() {
+    for s in (0..sp.len()).filter(|_| springs) {
         let n = sp.normal[s];
         for i in 0..3 {
             // Block K_aa = K_n n n^T + K_s (I - n n^T); K_ab = -K_aa.
@@ -38,7 +52,7 @@ pub fn stiffness_row_sums(model: &Model) -> Vec<f64> {
             rows[3 * sp.b[s] as usize + i] += 2.0 * r;
         }
     }
-    rows.chunks(3).map(|r| r[0].max(r[1]).max(r[2])).collect()
+    rows
 }
 
 /// Inertial masses and time step. Without mass scaling: the physical masses

@@ -38,14 +38,20 @@ pub fn damping_table(
     let mut variants = Vec::new();
     for damping in [DampingKind::Local, DampingKind::Viscous, DampingKind::Kinetic] {
         for mass_scaling in [true, false] {
-            variants.push(SolverParams { damping, mass_scaling, block_mass: Some(false), max_steps, ..base.clone() });
+            variants.push(SolverParams {
+                damping,
+                mass_scaling,
+                block_mass: Some(false),
+                max_steps: Some(max_steps),
+                ..base.clone()
+            });
         }
     }
     variants.push(SolverParams {
         damping: DampingKind::Viscous,
         mass_scaling: true,
         block_mass: Some(true),
-        max_steps,
+        max_steps: Some(max_steps),
         ..base.clone()
     });
     variants

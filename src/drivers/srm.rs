@@ -1,0 +1,259 @@
+//! Strength reduction: the factor of safety of a scene (`cdem srm`), as
+//! FLAC and 3DEC compute it after Dawson, Roth & Drescher (1999).
+//!
+//! The elastic state is computed once (phase 1 of [`super::run`]). For a
+//! trial factor `F` every breakable interface gets `T / F`, `c / F` and
+//! `tan(phi) / F` ([`Strength::reduced`]), and phase 2 ([`super::failure`])
+//! runs from the elastic state with the trial's own solver: `Equilibrium` is
+//! stable, `GlobalSliding` unstable, and `Undecided` (the per-trial step
+//! budget, by default the model's response time `N_r`, ran out) is counted
+//! as unstable, as FLAC counts a trial that does not converge. Brittle
+//! interfaces lose their (reduced) cohesion and tensile strength where they
+//! fail, ductile ones keep them (scene key `softening`).
+//!
+//! Search: from `F = 1`, multiply (stable) or divide (unstable) by
+//! [`BRACKET_RATIO`] until the outcome changes; then bisect the bracket
+//! `[lo, hi]` (`lo` stable, `hi` unstable) to a width of at most
+//! [`BRACKET_WIDTH`]. `fs` is the bracket's midpoint. The mechanism is the
+//! displacement since the elastic state of the trial at the final `hi`.
+
+use std::ops::ControlFlow;
+
+use serde::Serialize;
+
+use super::failure::{self, phase_budget, phase_solver};
+use super::run::{run_watched, Phase, Watch};
+use crate::error::{Error, SceneError};
+use crate::model::Model;
+use crate::physics::spring::Strength;
+use crate::scene::{FailureParams, Scene};
+use crate::solver::{Solver, State, StepView};
+use crate::summary::EndState;
+
+/// Bracket growth factor per trial before a bracket is found.
+pub const BRACKET_RATIO: f64 = 1.25;
+/// The bisection stops when `hi - lo` is at most this.
+pub const BRACKET_WIDTH: f64 = 0.01;
+/// The search gives up (no bracket) outside `[MIN_FACTOR, MAX_FACTOR]`.
+pub const MIN_FACTOR: f64 = 0.05;
+pub const MAX_FACTOR: f64 = 100.0;
+
+/// One trial factor and what phase 2 did with it.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct Trial {
+    pub factor: f64,
+    pub outcome: EndState,
+    pub steps: usize,
+    /// Largest displacement since the elastic state (m).
+    pub max_displacement: f64,
+    /// Springs that failed (either kind).
+    pub failed_springs: usize,
+}
+
+impl Trial {
+    pub fn stable(&self) -> bool {
+        self.outcome == EndState::Equilibrium
+    }
+}
+
+/// What the strength reduction found (`srm.json`).
+#[derive(Debug, Clone, Serialize)]
+pub struct SrmResult {
+    /// Midpoint of the final bracket; None without a bracket.
+    pub fs: Option<f64>,
+    /// `[lo, hi]`: the largest stable and the smallest unstable factor tried
+    /// (either None if never found).
+    pub bracket: [Option<f64>; 2],
+    pub trials: Vec<Trial>,
+    /// Steps of the elastic phase.
+    pub elastic_steps: usize,
+    /// Step budget of each trial.
+    pub trial_budget: usize,
+    pub wall_s: f64,
+    /// The displacement since the elastic state at the final `hi` (the
+    /// mechanism), 3 per node.
+    #[serde(skip)]
+    pub mechanism: Option<Vec<f64>>,
+}
+
+/// What the caller sees of a strength reduction as it goes.
+pub enum SrmProgress<'a> {
+    /// The elastic phase ended after this many steps.
+    Elastic(usize),
+    /// A trial starts.
+    TrialStart(f64),
+    /// Every 100 steps of a trial: (step, unbalanced ratio).
+    Step(usize, f64),
+    /// A trial ended.
+    TrialEnd(&'a Trial),
+}
+
+struct Forward<'a, 'b>(&'a mut dyn FnMut(SrmProgress<'b>));
+
+impl Watch for Forward<'_, '_> {
+    fn step(&mut self, _phase: Phase, view: &StepView) -> ControlFlow<()> {
+        if view.steps.is_multiple_of(100) {
+            (self.0)(SrmProgress::Step(view.steps, view.ratio));
+        }
+        ControlFlow::Continue(())
+    }
+}
+
+/// The model, its breakable strengths and the elastic state, for trials.
+pub struct Reduction {
+    pub model: Model,
+    strengths: Vec<Option<Strength>>,
+    elastic: State,
+    scene: Scene,
+    params: FailureParams,
+}
+
+impl Reduction {
+    /// Phase 1 of `scene` (its `[failure]` section, if any, gives the trial
+    /// settings). Needs a breakable interface.
+    pub fn new(scene: &Scene) -> Result<(Self, usize), Error> {
+        let params = scene.failure.clone().unwrap_or_default();
+        let mut elastic_scene = scene.clone();
+        elastic_scene.failure = None;
+        elastic_scene.output.stress = false;
+        let run = run_watched(&elastic_scene, &mut NoWatch)?;
+        if !run.elastic.converged {
+            return Err(SceneError::invalid(
+                "solver.max_steps",
+                format!("the elastic phase did not converge in {} steps: no state to reduce from", run.elastic.steps),
+            )
+            .into());
+        }
+        let strengths: Vec<Option<Strength>> = run.model.interfaces.iter().map(|i| i.strength).collect();
+        if strengths.iter().all(Option::is_none) {
+            return Err(SceneError::invalid(
+                "interface",
+                "strength reduction needs a breakable interface (a `strength` on [joints] or an [[interface]])",
+            )
+            .into());
+        }
+        let steps = run.elastic.steps;
+        Ok((Self { model: run.model, strengths, elastic: run.state, scene: scene.clone(), params }, steps))
+    }
+
+    /// Phase 2 with every breakable strength divided by `factor`; returns the
+    /// trial and the displacement since the elastic state.
+    pub fn trial(&mut self, factor: f64, watch: &mut dyn Watch) -> Result<(Trial, Vec<f64>), Error> {
+        for (iface, base) in self.model.interfaces.iter_mut().zip(&self.strengths) {
+            iface.strength = base.map(|s| s.reduced(factor));
+        }
+        let solver = Solver::new(&self.model, self.scene.solver.clone())?;
+        let mut solver = phase_solver(solver, &self.model, &self.scene.solver, &self.params)?;
+        let mut state = self.elastic.clone();
+        let options = failure::Options { vtk: false, history_every: usize::MAX };
+        let r = failure::run(
+            &mut solver,
+            &self.model,
+            &mut state,
+            &self.params,
+            self.scene.solver.tolerance,
+            options,
+            watch,
+        )?;
+        let since: Vec<f64> = state.u.iter().zip(&r.u_elastic).map(|(a, b)| a - b).collect();
+        let trial = Trial {
+            factor,
+            outcome: r.end,
+            steps: r.report.steps,
+            max_displacement: since
+                .chunks(3)
+                .map(|d| (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt())
+                .fold(0.0, f64::max),
+            failed_springs: state
+                .springs
+                .status
+                .iter()
+                .filter(|s| **s != crate::physics::spring::SpringStatus::Intact)
+                .count(),
+        };
+        Ok((trial, since))
+    }
+
+    /// The step budget of one trial.
+    pub fn budget(&self) -> Result<usize, Error> {
+        let solver = phase_solver(
+            Solver::new(&self.model, self.scene.solver.clone())?,
+            &self.model,
+            &self.scene.solver,
+            &self.params,
+        )?;
+        Ok(phase_budget(&solver, &self.model, &self.params))
+    }
+}
+
+struct NoWatch;
+impl Watch for NoWatch {}
+
+/// The strength reduction of a scene (see the module doc).
+pub fn run_srm(scene: &Scene, progress: &mut dyn FnMut(SrmProgress)) -> Result<(SrmResult, Model), Error> {
+    let t0 = std::time::Instant::now();
+    let (mut red, elastic_steps) = Reduction::new(scene)?;
+    progress(SrmProgress::Elastic(elastic_steps));
+    let trial_budget = red.budget()?;
+    let mut trials = Vec::new();
+    let (mut lo, mut hi) = (None::<f64>, None::<f64>);
+    let mut mechanism = None;
+    let mut run =
+        |f: f64, trials: &mut Vec<Trial>, progress: &mut dyn FnMut(SrmProgress)| -> Result<(bool, Vec<f64>), Error> {
+            progress(SrmProgress::TrialStart(f));
+            let (t, since) = red.trial(f, &mut Forward(progress))?;
+            progress(SrmProgress::TrialEnd(&t));
+            trials.push(t);
+            Ok((t.stable(), since))
+        };
+    // Bracketing.
+    let mut f = 1.0;
+    loop {
+        let (stable, since) = run(f, &mut trials, progress)?;
+        if stable {
+            lo = Some(f);
+            if hi.is_some() {
+                break;
+            }
+            f *= BRACKET_RATIO;
+            if f > MAX_FACTOR {
+                break;
+            }
+        } else {
+            hi = Some(f);
+            mechanism = Some(since);
+            if lo.is_some() {
+                break;
+            }
+            f /= BRACKET_RATIO;
+            if f < MIN_FACTOR {
+                break;
+            }
+        }
+    }
+    // Bisection.
+    while let (Some(l), Some(h)) = (lo, hi) {
+        if h - l <= BRACKET_WIDTH {
+            break;
+        }
+        let mid = 0.5 * (l + h);
+        let (stable, since) = run(mid, &mut trials, progress)?;
+        if stable {
+            lo = Some(mid);
+        } else {
+            hi = Some(mid);
+            mechanism = Some(since);
+        }
+    }
+    let fs = lo.zip(hi).map(|(l, h)| 0.5 * (l + h));
+    let result = SrmResult {
+        fs,
+        bracket: [lo, hi],
+        trials,
+        elastic_steps,
+        trial_budget,
+        wall_s: t0.elapsed().as_secs_f64(),
+        mechanism,
+    };
+    Ok((result, red.model))
+}

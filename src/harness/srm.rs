@@ -1,0 +1,29 @@
+//! The figure of a strength reduction: the mechanism (the magnitude of the
+//! displacement since the elastic state at the smallest unstable factor) on
+//! the front face of the section, `mechanism.png`.
+
+use std::path::Path;
+
+use crate::drivers::SrmResult;
+use crate::error::Error;
+use crate::harness::figures::section_contour;
+use crate::harness::section::{element_mean_displacement, front_patches};
+use crate::model::Model;
+
+/// Writes `path` (PNG) if the reduction found an unstable factor; returns
+/// whether it did.
+pub fn mechanism_png(result: &SrmResult, model: &Model, path: &Path) -> Result<bool, Error> {
+    let Some(u) = &result.mechanism else { return Ok(false) };
+    let magnitude = |e: usize| {
+        let c = [0, 1, 2].map(|d| element_mean_displacement(model, u, e, d));
+        (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt()
+    };
+    let patches = front_patches(model, magnitude);
+    let title = match (result.fs, result.bracket[1]) {
+        (Some(fs), Some(hi)) => format!("strength reduction: FS = {fs:.3}; mechanism at F = {hi:.3}"),
+        (_, Some(hi)) => format!("strength reduction: no bracket; mechanism at F = {hi:.3}"),
+        _ => "strength reduction".to_string(),
+    };
+    section_contour(path, &title, "|u - u_elastic| (m)", &patches, &[])?;
+    Ok(true)
+}
