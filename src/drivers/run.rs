@@ -1,5 +1,5 @@
-//! The CDEM run of a scene: read the mesh, build the model, relax phase 1
-//! (elastic), then, for a scene with `[failure]`, phase 2 (breakable joints,
+//! The CDEM run of a scene: read the mesh, build the model, solve phase 1
+//! (elastic; dynamic relaxation or conjugate gradients, `[solver] elastic`), then, for a scene with `[failure]`, phase 2 (breakable joints,
 //! [`super::failure`]); summarise. Orchestration only: the arithmetic is in
 //! the solver, the files are written by `output`.
 
@@ -14,7 +14,7 @@ use crate::model::{self, Model};
 use crate::physics::spring::SpringStatus;
 use crate::scene::Scene;
 use crate::solver::relax::max_displacement_since;
-use crate::solver::{relax, RunReport, Solver, State, StepView, StopRules};
+use crate::solver::{relax, ElasticSolver, Pcg, RunReport, Solver, State, StepView, StopRules};
 use crate::summary::{EndState, FailedSprings, FieldExtremes, PhaseSummary, Summary};
 
 /// The two phases of a run.
@@ -115,7 +115,6 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
     let t0 = Instant::now();
     let model = build_model(scene)?;
     check_supports(&model)?;
-    let mut solver = Solver::new(&model, scene.solver.clone())?;
     let mut state = State::new(&model);
 
     // Phase 1.
@@ -133,7 +132,13 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         }
         watch.step(Phase::Elastic, view)
     };
-    let elastic = relax(&mut solver, &model, &mut state, &rules, &mut observe)?;
+    let (elastic, mut solver) = match scene.solver.elastic {
+        ElasticSolver::Dr => {
+            let mut solver = Solver::new(&model, scene.solver.clone())?;
+            (relax(&mut solver, &model, &mut state, &rules, &mut observe)?, Some(solver))
+        }
+        ElasticSolver::Pcg => (Pcg::new(&model)?.solve(&model, &mut state, &rules, &mut observe)?, None),
+    };
     let phase1 = PhaseSummary {
         end_state: if elastic.converged { EndState::Equilibrium } else { EndState::Undecided },
         steps: elastic.steps,
@@ -142,11 +147,16 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         max_displacement: FieldExtremes::of(&state.u, None).max_abs_u,
     };
 
-    // Phase 2.
+    // Phase 2, from the state phase 1 left (dynamic relaxation whatever
+    // solved phase 1).
     let failure = match &scene.failure {
         Some(params) => {
+            let solver = match &mut solver {
+                Some(s) => s,
+                None => solver.insert(Solver::new(&model, scene.solver.clone())?),
+            };
             let options = failure::Options { vtk: scene.output.vtk, history_every: scene.output.history_every };
-            Some(failure::run(&mut solver, &model, &mut state, params, scene.solver.tolerance, options, watch)?)
+            Some(failure::run(solver, &model, &mut state, params, scene.solver.tolerance, options, watch)?)
         }
         None => None,
     };
@@ -166,7 +176,7 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         converged: last.end_state == EndState::Equilibrium,
         steps: phase1.steps + phase2.as_ref().map_or(0, |p| p.steps),
         wall_s: t0.elapsed().as_secs_f64(),
-        dt: solver.dt(),
+        dt: solver.as_ref().map_or(elastic.dt, Solver::dt),
         unbalanced_ratio: last.unbalanced_ratio,
         max_abs_uz: field.max_abs_uz,
         min_uz: field.min_uz,
@@ -183,15 +193,22 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
 }
 
 /// Relaxes a model to equilibrium with the given settings and no watcher
-/// (benches, perf, tests): phase 1 of [`run_watched`] without the scene.
+/// (benches, perf, tests): phase 1 of [`run_watched`] without the scene,
+/// by the solver `params.elastic` names.
 pub fn relax_elastic(
     model: &Model,
     params: &crate::solver::SolverParams,
     history_every: usize,
 ) -> Result<(State, RunReport), Error> {
-    let mut solver = Solver::new(model, params.clone())?;
     let mut state = State::new(model);
-    let report = solver.relax(model, &mut state, history_every)?;
+    let report = match params.elastic {
+        ElasticSolver::Dr => Solver::new(model, params.clone())?.relax(model, &mut state, history_every)?,
+        ElasticSolver::Pcg => {
+            let rules =
+                StopRules { tolerance: params.tolerance, max_steps: params.max_steps, sliding: None, history_every };
+            Pcg::new(model)?.solve(model, &mut state, &rules, &mut crate::solver::relax::unobserved)?
+        }
+    };
     Ok((state, report))
 }
 

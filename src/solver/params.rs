@@ -19,6 +19,17 @@ pub enum DampingKind {
     Kinetic,
 }
 
+/// The solver of the elastic phase (phase 1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ElasticSolver {
+    /// Dynamic relaxation (the paper's method).
+    #[default]
+    Dr,
+    /// Two-level preconditioned conjugate gradients ([`crate::solver::pcg`]).
+    Pcg,
+}
+
 /// Dynamic-relaxation settings. Every field has a default.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -47,6 +58,9 @@ pub struct SolverParams {
     pub tolerance: f64,
     /// Stop (not converged) after this many steps. Default 1 000 000.
     pub max_steps: usize,
+    /// Solver of the elastic phase: `"dr"` or `"pcg"` (an iteration is
+    /// then a step of `max_steps` and of the history). Default `"dr"`.
+    pub elastic: ElasticSolver,
 }
 
 impl Default for SolverParams {
@@ -59,6 +73,7 @@ impl Default for SolverParams {
             block_mass: None,
             tolerance: 1e-5,
             max_steps: 1_000_000,
+            elastic: ElasticSolver::Dr,
         }
     }
 }
