@@ -158,7 +158,7 @@ impl Pcg {
             state.step = step;
             let steps = step - first;
             ratio = unbalanced_ratio(max_abs(&r), self.f_ext_max);
-            if !ratio.is_finite() {
+            if ratio.is_nan() {
                 return Err(non_finite(step, &state.u));
             }
             let mut restart = false;
@@ -213,8 +213,10 @@ impl Pcg {
     }
 }
 
+/// `max |x_k|`, NaN if any component is (so a non-finite residual never converges).
 fn max_abs(x: &[f64]) -> f64 {
-    x.par_iter().with_min_len(CHUNK).map(|v| v.abs()).reduce(|| 0.0, f64::max)
+    let max = |a: f64, b: f64| if a.is_nan() || b.is_nan() { f64::NAN } else { a.max(b) };
+    x.par_iter().with_min_len(CHUNK).map(|v| v.abs()).reduce(|| 0.0, max)
 }
 
 fn non_finite(step: usize, x: &[f64]) -> SolveError {
