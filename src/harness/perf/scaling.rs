@@ -191,8 +191,7 @@ pub struct Exponents {
 /// that have the figure).
 pub fn exponents(rows: &[ScalingRow]) -> Exponents {
     let fit = |f: &dyn Fn(&ScalingRow) -> Option<f64>| {
-        let (n, y): (Vec<f64>, Vec<f64>) =
-            rows.iter().filter_map(|r| f(r).map(|y| (r.elements as f64, y))).unzip();
+        let (n, y): (Vec<f64>, Vec<f64>) = rows.iter().filter_map(|r| f(r).map(|y| (r.elements as f64, y))).unzip();
         if n.len() >= 2 {
             fit_power(&n, &y).0
         } else {

@@ -92,9 +92,9 @@ pub fn scaling_markdown(scaling: &[ScalingRow]) -> String {
         );
         let opt = |v: Option<String>| v.unwrap_or_else(|| "-".to_string());
         for r in scaling {
-            let dr_steps = r.dr_steps.map(|s| {
-                format!("{s}{}", if r.dr_converged == Some(false) { " (not converged)" } else { "" })
-            });
+            let dr_steps = r
+                .dr_steps
+                .map(|s| format!("{s}{}", if r.dr_converged == Some(false) { " (not converged)" } else { "" }));
             let _ = writeln!(
                 md,
                 "| {} | {} | {} | {} | {:.2} | {:.3} | {:.2} | {:.1} | {} | {} | {} | {}{} | {:.3} | {:.3} | {} \

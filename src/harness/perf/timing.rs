@@ -103,7 +103,12 @@ pub fn time_pcg(model: &Model, params: &SolverParams) -> Result<PcgFigure, Error
     let mut pcg = Pcg::new(model)?;
     let setup_s = t.elapsed().as_secs_f64();
     let mut state = State::new(model);
-    let rules = StopRules { tolerance: params.tolerance, max_steps: params.max_steps, sliding: None, history_every: usize::MAX };
+    let rules = StopRules {
+        tolerance: params.tolerance,
+        max_steps: params.max_steps,
+        sliding: None,
+        history_every: usize::MAX,
+    };
     let report = pcg.solve(model, &mut state, &rules, &mut unobserved)?;
     let seconds = t.elapsed().as_secs_f64();
     let max_abs_uz = state.u.chunks(3).map(|d| d[2].abs()).fold(0.0, f64::max);
