@@ -15,7 +15,7 @@ use crate::error::Error;
 use crate::model::Model;
 use crate::scene::Scene;
 use crate::solver::relax::unobserved;
-use crate::solver::{Pcg, Solver, SolverParams, State, StopRules};
+use crate::solver::{ElasticSolver, Pcg, Solver, SolverParams, State, StopRules};
 
 /// One step's cost on a model.
 #[derive(Debug, Clone, Serialize)]
@@ -72,11 +72,13 @@ pub struct DrFigure {
     pub max_abs_uz: f64,
 }
 
-/// Relaxes `model` from rest with `params` once, as phase 1 of a run does
-/// (to the tolerance or `params.max_steps`), without history rows.
+/// Relaxes `model` from rest with `params` once by dynamic relaxation
+/// (whatever `params.elastic` says), as phase 1 of a run does (to the
+/// tolerance or `params.max_steps`), without history rows.
 pub fn time_dr(model: &Model, params: &SolverParams) -> Result<DrFigure, Error> {
+    let params = SolverParams { elastic: ElasticSolver::Dr, ..params.clone() };
     let t = Instant::now();
-    let (state, report) = crate::drivers::run::relax_elastic(model, params, usize::MAX)?;
+    let (state, report) = crate::drivers::run::relax_elastic(model, &params, usize::MAX)?;
     let seconds = t.elapsed().as_secs_f64();
     let max_abs_uz = state.u.chunks(3).map(|d| d[2].abs()).fold(0.0, f64::max);
     Ok(DrFigure { converged: report.converged, steps: report.steps, seconds, max_abs_uz })
