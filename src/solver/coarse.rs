@@ -18,8 +18,8 @@
 //!
 //! `A_c` is assembled once into a lower-triangular column-compressed pattern
 //! (no triplets: at 1e5 hexahedra they would take several times its memory)
-//! and factored once by faer's sparse Cholesky; every application is then a
-//! pair of triangular solves. Every sum has a fixed order (elements in model
+//! and factored once by faer's sparse Cholesky (sequentially: the parallel factor sums in a thread-dependent order);
+//! every application is then a pair of triangular solves. Every sum has a fixed order (elements in model
 //! order for the assembly, copies in model order for the restriction), so the
 //! result does not depend on the number of threads.
 
