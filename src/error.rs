@@ -106,6 +106,10 @@ pub enum SolveError {
     NonFinite { step: usize, node: usize },
     #[error("step {step}: energy blow-up at node {node} (kinetic energy {kinetic:.3e} J > external work {work:.3e} J): unstable time step")]
     Unstable { step: usize, node: usize, kinetic: f64, work: f64 },
+    /// Conjugate gradients (`elastic = "pcg"`): a search direction with
+    /// `p . K p <= 0`, so the elastic stiffness is not positive definite.
+    #[error("conjugate gradients, iteration {iteration}: p.Kp = {pkp:.3e} <= 0: the elastic stiffness is not positive definite (a part held by no [[boundary]] group, or a mechanism)")]
+    NotPositiveDefiniteCg { iteration: usize, pkp: f64 },
     #[error("the model has zero stiffness or zero mass: no stable time step")]
     NoTimeStep,
     /// Implicit FEM: the fixities leave a rigid-body motion free.

@@ -58,6 +58,7 @@ fn headline_figures_for_the_report() {
     let (scene, model) = paper_slope(Path::new(".")).unwrap();
     let h = headline(Path::new("."), &scene, &model, &mut |_| {}).unwrap();
     assert!(h.dr_block.converged, "DR of the paper slope converges");
+    assert!(h.pcg.converged, "PCG of the paper slope converges");
     println!("{}", h.markdown());
     let rows = cdem::harness::validation::perf_rows(&h);
     for c in &rows {

@@ -1,5 +1,5 @@
-//! The CDEM run of a scene: read the mesh, build the model, relax phase 1
-//! (elastic), then, for a scene with `[failure]`, phase 2 (breakable joints,
+//! The CDEM run of a scene: read the mesh, build the model, solve phase 1
+//! (elastic; dynamic relaxation or conjugate gradients, `[solver] elastic`), then, for a scene with `[failure]`, phase 2 (breakable joints,
 //! [`super::failure`]); summarise. Orchestration only: the arithmetic is in
 //! the solver, the files are written by `output`.
 
@@ -13,8 +13,9 @@ use crate::mesh::Mesh;
 use crate::model::{self, Model};
 use crate::physics::spring::SpringStatus;
 use crate::scene::Scene;
+use crate::solver::budget::pcg_budget;
 use crate::solver::relax::max_displacement_since;
-use crate::solver::{relax, RunReport, Solver, State, StepView, StopRules};
+use crate::solver::{relax, ElasticSolver, Pcg, RunReport, Solver, State, StepView, StopRules};
 use crate::summary::{EndState, FailedSprings, FieldExtremes, PhaseSummary, Summary};
 
 /// The two phases of a run.
@@ -115,15 +116,14 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
     let t0 = Instant::now();
     let model = build_model(scene)?;
     check_supports(&model)?;
-    let mut solver = Solver::new(&model, scene.solver.clone())?;
     let mut state = State::new(&model);
 
     // Phase 1.
     let frame_every = if scene.output.vtk { scene.output.frame_every } else { 0 };
     let mut frames = Vec::new();
-    let rules = StopRules {
+    let rules = |max_steps: usize| StopRules {
         tolerance: scene.solver.tolerance,
-        max_steps: solver.step_budget(&model),
+        max_steps,
         sliding: None,
         history_every: scene.output.history_every,
     };
@@ -133,7 +133,17 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         }
         watch.step(Phase::Elastic, view)
     };
-    let elastic = relax(&mut solver, &model, &mut state, &rules, &mut observe)?;
+    let (elastic, mut solver) = match scene.solver.elastic {
+        ElasticSolver::Dr => {
+            let mut solver = Solver::new(&model, scene.solver.clone())?;
+            let rules = rules(solver.step_budget(&model));
+            (relax(&mut solver, &model, &mut state, &rules, &mut observe)?, Some(solver))
+        }
+        ElasticSolver::Pcg => {
+            let rules = rules(pcg_budget(&model, &scene.solver));
+            (Pcg::new(&model)?.solve(&model, &mut state, &rules, &mut observe)?, None)
+        }
+    };
     let phase1 = PhaseSummary {
         end_state: if elastic.converged { EndState::Equilibrium } else { EndState::Undecided },
         steps: elastic.steps,
@@ -142,11 +152,16 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         max_displacement: FieldExtremes::of(&state.u, None).max_abs_u,
     };
 
-    // Phase 2.
+    // Phase 2, from the state phase 1 left (dynamic relaxation whatever
+    // solved phase 1).
     let failure = match &scene.failure {
         Some(params) => {
+            let phase1_solver = match solver.take() {
+                Some(s) => s,
+                None => Solver::new(&model, scene.solver.clone())?,
+            };
             let options = failure::Options { vtk: scene.output.vtk, history_every: scene.output.history_every };
-            solver = failure::phase_solver(solver, &model, &scene.solver, params)?;
+            let mut solver = failure::phase_solver(phase1_solver, &model, &scene.solver, params)?;
             Some(failure::run(&mut solver, &model, &mut state, params, scene.solver.tolerance, options, watch)?)
         }
         None => None,
@@ -167,7 +182,7 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         converged: last.end_state == EndState::Equilibrium,
         steps: phase1.steps + phase2.as_ref().map_or(0, |p| p.steps),
         wall_s: t0.elapsed().as_secs_f64(),
-        dt: solver.dt(),
+        dt: solver.as_ref().map_or(elastic.dt, Solver::dt),
         unbalanced_ratio: last.unbalanced_ratio,
         max_abs_uz: field.max_abs_uz,
         min_uz: field.min_uz,
@@ -184,15 +199,26 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
 }
 
 /// Relaxes a model to equilibrium with the given settings and no watcher
-/// (benches, perf, tests): phase 1 of [`run_watched`] without the scene.
+/// (benches, perf, tests): phase 1 of [`run_watched`] without the scene,
+/// by the solver `params.elastic` names.
 pub fn relax_elastic(
     model: &Model,
     params: &crate::solver::SolverParams,
     history_every: usize,
 ) -> Result<(State, RunReport), Error> {
-    let mut solver = Solver::new(model, params.clone())?;
     let mut state = State::new(model);
-    let report = solver.relax(model, &mut state, history_every)?;
+    let report = match params.elastic {
+        ElasticSolver::Dr => Solver::new(model, params.clone())?.relax(model, &mut state, history_every)?,
+        ElasticSolver::Pcg => {
+            let rules = StopRules {
+                tolerance: params.tolerance,
+                max_steps: pcg_budget(model, params),
+                sliding: None,
+                history_every,
+            };
+            Pcg::new(model)?.solve(model, &mut state, &rules, &mut crate::solver::relax::unobserved)?
+        }
+    };
     Ok((state, report))
 }
 

@@ -699,6 +699,7 @@ pub const ROWS: &[RowSpec] = &[
     // Performance, reported against the goals (tests/performance.rs).
     spec("perf/bandwidth", "performance: paper slope step", "bandwidth / stream triad (goal >= 0.5)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/dr-over-fem", "performance: paper slope", "DR to 1e-5 / FEM solve time (goal <= 3)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
+    spec("perf/pcg-over-fem", "performance: paper slope", "PCG to 1e-5 / FEM solve time (goal <= 3)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/lem/paper_slope", "performance: LEM grid, paper_slope", "pySlope / ours time (goal >= 100)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/lem/acads_1a", "performance: LEM grid, acads_1a", "pySlope / ours time (goal >= 100)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),
 ];

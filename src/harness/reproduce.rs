@@ -180,7 +180,11 @@ fn elastic_slope(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(),
         c.steps, c.wall_s, f.wall_s
     );
     figs6_7_contours(rep, &r, &fem)?;
-    convergence_history(rep, &r)
+    let mut dr_scene = scene.clone();
+    dr_scene.solver.elastic = crate::solver::ElasticSolver::Dr;
+    let dr = run_scene(&dr_scene, &mut |_, _| {})?;
+    let pcg = (scene.solver.elastic == crate::solver::ElasticSolver::Pcg).then_some(&r);
+    convergence_history(rep, &dr, pcg)
 }
 
 /// Figs. 6 (sigma_zz) and 7 (u_z) of the elastic slope, CDEM and FEM, on the front section.
@@ -214,10 +218,13 @@ fn figs6_7_contours(rep: &mut Report, r: &RunResult, fem: &FemSolution) -> Resul
     Ok(())
 }
 
-/// The convergence of dynamic relaxation on the elastic slope (no paper
-/// figure): unbalanced-force ratio and kinetic energy against step.
-fn convergence_history(rep: &mut Report, r: &RunResult) -> Result<(), Error> {
+/// The convergence of the elastic slope (no paper figure): dynamic
+/// relaxation's (`r`) unbalanced-force ratio and kinetic energy against
+/// step, and PCG's ratio against iteration (`pcg`: a run whose phase 1 was PCG).
+fn convergence_history(rep: &mut Report, r: &RunResult, pcg: Option<&RunResult>) -> Result<(), Error> {
     let ratio: Vec<(f64, f64)> = r.elastic.history.iter().map(|h| (h.step as f64, h.unbalanced_ratio)).collect();
+    let pcg_ratio: Vec<(f64, f64)> =
+        pcg.map_or(Vec::new(), |p| p.elastic.history.iter().map(|h| (h.step as f64, h.unbalanced_ratio)).collect());
     let ke: Vec<(f64, f64)> = r
         .elastic
         .history
@@ -228,12 +235,13 @@ fn convergence_history(rep: &mut Report, r: &RunResult) -> Result<(), Error> {
         .collect();
     line_plot(
         &rep.path("history-slope.png"),
-        "Elastic slope: convergence of dynamic relaxation",
-        "step",
+        "Elastic slope: convergence of dynamic relaxation and PCG",
+        "step (DR) or iteration (PCG)",
         "value",
         &[
-            Series { name: "unbalanced-force ratio", points: &ratio },
-            Series { name: "kinetic energy / max", points: &ke },
+            Series { name: "DR: unbalanced-force ratio", points: &ratio },
+            Series { name: "DR: kinetic energy / max", points: &ke },
+            Series { name: "PCG: unbalanced-force ratio", points: &pcg_ratio },
         ],
         Scale::Linear,
         Scale::Log,

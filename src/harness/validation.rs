@@ -227,6 +227,7 @@ pub fn perf_rows(h: &Headline) -> Vec<Check> {
     let mut rows = vec![
         row("perf/bandwidth").value(h.step_fraction_of_stream(), 0.5, h.step_block.step_s),
         row("perf/dr-over-fem").value(h.dr_over_fem(), 3.0, h.dr_block.seconds),
+        row("perf/pcg-over-fem").value(h.pcg_over_fem(), 3.0, h.pcg.seconds),
     ];
     for (case, ours, pyslope) in &h.lem {
         let id = format!("perf/lem/{case}");

@@ -94,3 +94,9 @@ pub fn response_steps(model: &Model, params: &SolverParams, block_masses: bool) 
     let n = c * crossing_elements(model) * (kappa * stiffness_contrast(model)).sqrt();
     (n.ceil() as usize).max(MIN_STEPS)
 }
+
+/// The step (iteration) budget of a PCG elastic phase: `max_steps`, else
+/// `N_r` with node-block masses, a generous cap (PCG needs tens of iterations).
+pub fn pcg_budget(model: &Model, params: &SolverParams) -> usize {
+    params.max_steps.unwrap_or_else(|| response_steps(model, params, true))
+}

@@ -6,19 +6,25 @@
 //! 3. monitor: convergence ratio, energies, non-finite state and blow-up.
 //!
 //! [`relax`](relax::relax) steps until a stop rule fires; it is the one loop
-//! every driver uses.
+//! every driver uses for dynamic relaxation. The elastic phase may instead
+//! be solved as a linear system by two-level preconditioned conjugate
+//! gradients ([`pcg`], coarse space [`coarse`]), with the same stop rules and
+//! convergence measure.
 
 pub mod block_mass;
 pub mod budget;
+pub mod coarse;
 pub mod forces;
 pub mod inertia;
 pub mod integrate;
 pub mod params;
+pub mod pcg;
 pub mod relax;
 pub mod timestep;
 
 pub use inertia::Inertia;
-pub use params::{DampingKind, SolverParams};
+pub use params::{DampingKind, ElasticSolver, SolverParams};
+pub use pcg::Pcg;
 pub use relax::{relax, Observer, RunReport, Sliding, StepView, Stop, StopRules};
 
 use serde::Serialize;
@@ -111,8 +117,7 @@ impl Solver {
             true => Inertia::block(mass, BlockMass::new(model, amplification / (4.0 * params.safety * params.safety))?),
             false => Inertia::lumped(mass),
         };
-        let f_ext_max =
-            model.f_ext.iter().zip(&model.fixed).filter(|(_, &fx)| !fx).map(|(f, _)| f.abs()).fold(0.0, f64::max);
+        let f_ext_max = f_ext_max(model);
         Ok(Self {
             params,
             inertia,
@@ -288,19 +293,20 @@ impl Solver {
 
     /// Unbalanced-force ratio `max |f_unbal| / max |f_ext|` (0 if unloaded and at rest).
     pub fn ratio(&self, max_unbalanced: f64) -> f64 {
-        if self.f_ext_max > 0.0 {
-            max_unbalanced / self.f_ext_max
-        } else if max_unbalanced == 0.0 {
-            0.0
-        } else {
-            f64::INFINITY
-        }
+        unbalanced_ratio(max_unbalanced, self.f_ext_max)
     }
 
     /// A history row of `state`; `kinetic` is the step's estimate, replaced
     /// by the exact `v . M v / 2` with block masses.
     pub fn history_row(&mut self, model: &Model, state: &State, kinetic: f64, ratio: f64) -> HistoryRow {
         let kinetic = if self.inertia.is_block() { self.kinetic_energy(state) } else { kinetic };
+        HistoryRow::of(model, state, kinetic, ratio)
+    }
+}
+
+impl HistoryRow {
+    /// The row of `state` with the given kinetic energy and ratio.
+    pub fn of(model: &Model, state: &State, kinetic: f64, ratio: f64) -> Self {
         let max_displacement =
             state.u.chunks(3).map(|d| (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()).fold(0.0, f64::max);
         HistoryRow {
@@ -312,6 +318,24 @@ impl Solver {
             unbalanced_ratio: ratio,
             max_displacement,
         }
+    }
+}
+
+/// `max |f_ext|` over the free components (N).
+pub fn f_ext_max(model: &Model) -> f64 {
+    model.f_ext.iter().zip(&model.fixed).filter(|(_, &fx)| !fx).map(|(f, _)| f.abs()).fold(0.0, f64::max)
+}
+
+/// The convergence measure of both elastic solvers, `max |f_unbal| / max
+/// |f_ext|` over free components (0 if unloaded and balanced, infinite if
+/// unloaded and not).
+pub fn unbalanced_ratio(max_unbalanced: f64, f_ext_max: f64) -> f64 {
+    if f_ext_max > 0.0 {
+        max_unbalanced / f_ext_max
+    } else if max_unbalanced == 0.0 {
+        0.0
+    } else {
+        f64::INFINITY
     }
 }
 

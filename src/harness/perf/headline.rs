@@ -2,7 +2,7 @@
 //! slope in one process so that their ratios are side by side on one
 //! machine state: the STREAM triad ([`super::stream`]), a step with block and
 //! with lumped masses against the byte model ([`super::timing`],
-//! [`super::bytes`]), dynamic relaxation against the FEM solve, and the LEM
+//! [`super::bytes`]), dynamic relaxation and PCG against the FEM solve, and the LEM
 //! grid search against pySlope ([`super::pyslope`]). The table is
 //! [`Headline::markdown`] ([`super::tables`]).
 
@@ -12,7 +12,7 @@ use serde::Serialize;
 
 use super::pyslope::{pyslope_seconds, time_lem_grid, LEM_CASES};
 use super::stream::stream_triad;
-use super::timing::{time_dr, time_fem, time_steps, DrFigure, StepFigure};
+use super::timing::{time_dr, time_fem, time_pcg, time_steps, DrFigure, PcgFigure, StepFigure};
 use crate::error::Error;
 use crate::model::Model;
 use crate::scene::Scene;
@@ -27,6 +27,8 @@ pub struct Headline {
     pub step_block: StepFigure,
     pub step_lumped: StepFigure,
     pub dr_block: DrFigure,
+    /// The elastic phase by two-level PCG.
+    pub pcg: PcgFigure,
     pub fem_s: f64,
     pub fem_dofs: usize,
     /// `(case, ours (s), pySlope (s))`: Bishop on the 20 x 20 x 10 grid,
@@ -40,6 +42,9 @@ impl Headline {
     }
     pub fn dr_over_fem(&self) -> f64 {
         self.dr_block.seconds / self.fem_s
+    }
+    pub fn pcg_over_fem(&self) -> f64 {
+        self.pcg.seconds / self.fem_s
     }
 }
 
@@ -60,6 +65,8 @@ pub fn headline(root: &Path, scene: &Scene, model: &Model, progress: &mut dyn Fn
     let step_lumped = time_steps(model, &SolverParams { block_mass: Some(false), ..scene.solver.clone() }, 500)?;
     progress("paper slope: dynamic relaxation");
     let dr_block = time_dr(model, &scene.solver)?;
+    progress("paper slope: PCG");
+    let pcg = time_pcg(model, &scene.solver)?;
     progress("paper slope: FEM");
     let (fem_s, fem_dofs) = time_fem(scene, 5)?;
     let mut lem = Vec::new();
@@ -68,5 +75,5 @@ pub fn headline(root: &Path, scene: &Scene, model: &Model, progress: &mut dyn Fn
         let ours = time_lem_grid(&root.join(input), 5)?;
         lem.push((case.to_string(), ours, pyslope_seconds(&root.join("references/pyslope.json"), case)?));
     }
-    Ok(Headline { stream_gbs, step_block, step_lumped, dr_block, fem_s, fem_dofs, lem })
+    Ok(Headline { stream_gbs, step_block, step_lumped, dr_block, pcg, fem_s, fem_dofs, lem })
 }

@@ -9,8 +9,9 @@
 //! - [`bytes`]: the bytes one step must move (counted as in
 //!   references/performance.md), so `bytes / step time` is the step's
 //!   effective bandwidth;
-//! - [`timing`]: a step, dynamic relaxation to the scene's tolerance, the
-//!   implicit FEM solve of the same mesh;
+//! - [`timing`]: a step, dynamic relaxation to the scene's tolerance, PCG
+//!   to the same tolerance, the implicit FEM solve of the same mesh;
+//! - [`memory`]: peak resident memory of a stage (Linux);
 //! - [`pyslope`]: the LEM grid search against pySlope's recorded time;
 //! - [`headline`](mod@headline): the four figures on the paper slope;
 //! - [`damping`]: damping kind x mass scaling x block masses on one scene;
@@ -29,6 +30,7 @@ use crate::error::Error;
 pub mod bytes;
 pub mod damping;
 pub mod headline;
+pub mod memory;
 pub mod pyslope;
 pub mod scaling;
 pub mod stream;
@@ -44,7 +46,7 @@ pub use scaling::{
 };
 pub use stream::{stream_triad, triad, triad_par};
 pub use tables::{damping_markdown, scaling_markdown, write_report};
-pub use timing::{time_dr, time_fem, time_steps, DrFigure, StepFigure};
+pub use timing::{time_dr, time_fem, time_pcg, time_steps, DrFigure, PcgFigure, StepFigure};
 
 /// What `cdem perf` runs.
 #[derive(Debug, Clone)]
@@ -56,11 +58,14 @@ pub struct PerfOptions {
     pub refine: Vec<f64>,
     /// Lumped-mass DR is also run up to this many elements.
     pub lumped_up_to: usize,
+    /// DR (block masses) is run up to this many elements (at 1e5 it takes
+    /// about 16 minutes); PCG and the FEM at every size.
+    pub dr_up_to: usize,
 }
 
 impl Default for PerfOptions {
     fn default() -> Self {
-        Self { damping: true, refine: vec![0.5, 1.0, 2.0, 4.0, 7.0, 10.0], lumped_up_to: 4000 }
+        Self { damping: true, refine: vec![0.5, 1.0, 2.0, 4.0, 7.0, 10.0], lumped_up_to: 4000, dr_up_to: usize::MAX }
     }
 }
 
@@ -78,6 +83,6 @@ pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn 
     let damping =
         if opts.damping { damping_table(&model, &scene.solver, DAMPING_MAX_STEPS, progress) } else { Vec::new() };
     let meshes = scaling_meshes(root, &opts.refine, &out.join("meshes"), progress)?;
-    let scaling = scaling_study(&scene, &meshes, opts.lumped_up_to, progress)?;
+    let scaling = scaling_study(&scene, &meshes, opts.lumped_up_to, opts.dr_up_to, progress)?;
     write_report(out, &head, &damping, &scaling)
 }

@@ -2,7 +2,9 @@
 //! `refine` (1000 refine^2 hexahedra; the committed meshes, [`SLOPE_MESHES`],
 //! or gmsh for a whole `refine`, [`slope_mesh`]), and per resolution the
 //! build, a step, dynamic relaxation (with lumped masses too on the smaller
-//! meshes) and the FEM solve ([`super::timing`]); then the exponents `p` of
+//! meshes; block masses up to a size), the elastic phase by PCG, and the FEM
+//! solve ([`super::timing`]), with the peak memory of PCG and of the FEM
+//! ([`super::memory`]); then the exponents `p` of
 //! `cost ~ N^p` against the element count `N`, fitted by least squares on
 //! logarithms ([`fit_power`]).
 
@@ -11,7 +13,8 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use super::timing::{time_dr, time_fem, time_steps};
+use super::memory::with_peak;
+use super::timing::{time_dr, time_fem, time_pcg, time_steps};
 use crate::error::Error;
 use crate::scene::Scene;
 use crate::solver::SolverParams;
@@ -83,13 +86,24 @@ pub struct ScalingRow {
     pub step_s: f64,
     pub mega_element_steps_per_s: f64,
     pub gbs: f64,
-    pub dr_steps: usize,
-    pub dr_converged: bool,
-    pub dr_s: f64,
+    /// DR with block masses, measured only up to `dr_up_to` elements.
+    pub dr_steps: Option<usize>,
+    pub dr_converged: Option<bool>,
+    pub dr_s: Option<f64>,
     /// DR steps with lumped masses, measured only up to `lumped_up_to` elements.
     pub lumped_steps: Option<usize>,
+    /// The elastic phase by PCG (setup included, model built).
+    pub pcg_iterations: usize,
+    pub pcg_converged: bool,
+    pub pcg_setup_s: f64,
+    pub pcg_s: f64,
+    pub pcg_coarse_dofs: usize,
+    /// Peak resident memory while PCG ran (the built model included), MB.
+    pub pcg_peak_mb: Option<f64>,
     pub fem_s: f64,
     pub fem_dofs: usize,
+    /// Peak resident memory of the FEM solve (end to end), MB.
+    pub fem_peak_mb: Option<f64>,
 }
 
 /// Cost against size on `scene` with the meshes given as `(refine, mesh)`.
@@ -97,6 +111,7 @@ pub fn scaling_study(
     scene: &Scene,
     meshes: &[(f64, PathBuf)],
     lumped_up_to: usize,
+    dr_up_to: usize,
     progress: &mut dyn FnMut(&str),
 ) -> Result<Vec<ScalingRow>, Error> {
     let mut rows = Vec::new();
@@ -111,18 +126,27 @@ pub fn scaling_study(
         progress(&format!("scaling: {n} elements: steps"));
         let steps = (2_000_000 / n.max(1)).clamp(20, 500);
         let step = time_steps(&model, &s.solver, steps)?;
-        progress(&format!("scaling: {n} elements: DR ({:.1} ms per step)", 1e3 * step.step_s));
-        let dr = time_dr(&model, &s.solver)?;
+        let dr = match n <= dr_up_to {
+            true => {
+                progress(&format!("scaling: {n} elements: DR ({:.1} ms per step)", 1e3 * step.step_s));
+                Some(time_dr(&model, &s.solver)?)
+            }
+            false => None,
+        };
         let lumped_steps = if n <= lumped_up_to {
             progress(&format!("scaling: {n} elements: DR with lumped masses"));
             Some(time_dr(&model, &SolverParams { block_mass: Some(false), ..s.solver.clone() })?.steps)
         } else {
             None
         };
+        progress(&format!("scaling: {n} elements: PCG"));
+        let (pcg, pcg_peak_mb) = with_peak(|| time_pcg(&model, &s.solver));
+        let pcg = pcg?;
         let (node_copies, springs) = (model.n_nodes(), model.springs.len());
         drop(model); // the FEM solve of the largest meshes needs the memory
         progress(&format!("scaling: {n} elements: FEM"));
-        let (fem_s, fem_dofs) = time_fem(&s, 1)?;
+        let (fem, fem_peak_mb) = with_peak(|| time_fem(&s, 1));
+        let (fem_s, fem_dofs) = fem?;
         rows.push(ScalingRow {
             refine: *refine,
             elements: n,
@@ -132,36 +156,55 @@ pub fn scaling_study(
             step_s: step.step_s,
             mega_element_steps_per_s: step.mega_element_steps_per_s,
             gbs: step.gbs,
-            dr_steps: dr.steps,
-            dr_converged: dr.converged,
-            dr_s: dr.seconds,
+            dr_steps: dr.as_ref().map(|d| d.steps),
+            dr_converged: dr.as_ref().map(|d| d.converged),
+            dr_s: dr.as_ref().map(|d| d.seconds),
             lumped_steps,
+            pcg_iterations: pcg.iterations,
+            pcg_converged: pcg.converged,
+            pcg_setup_s: pcg.setup_s,
+            pcg_s: pcg.seconds,
+            pcg_coarse_dofs: pcg.coarse_dofs,
+            pcg_peak_mb,
             fem_s,
             fem_dofs,
+            fem_peak_mb,
         });
     }
     Ok(rows)
 }
 
-/// The fitted exponents of the scaling study against the element count.
+/// The fitted exponents of the scaling study against the element count
+/// (NaN where fewer than two rows have the figure).
 #[derive(Debug, Clone, Serialize)]
 pub struct Exponents {
     pub step_s: f64,
     pub dr_steps: f64,
     pub dr_s: f64,
+    pub pcg_iterations: f64,
+    pub pcg_s: f64,
     pub fem_s: f64,
 }
 
-/// The exponents of time per step, DR steps, DR time and FEM time against
-/// the element count ([`fit_power`]; at least two rows).
+/// The exponents of time per step, DR steps and time, PCG iterations and
+/// time and FEM time against the element count ([`fit_power`], on the rows
+/// that have the figure).
 pub fn exponents(rows: &[ScalingRow]) -> Exponents {
-    let n: Vec<f64> = rows.iter().map(|r| r.elements as f64).collect();
-    let fit = |f: &dyn Fn(&ScalingRow) -> f64| fit_power(&n, &rows.iter().map(f).collect::<Vec<_>>()).0;
+    let fit = |f: &dyn Fn(&ScalingRow) -> Option<f64>| {
+        let (n, y): (Vec<f64>, Vec<f64>) = rows.iter().filter_map(|r| f(r).map(|y| (r.elements as f64, y))).unzip();
+        if n.len() >= 2 {
+            fit_power(&n, &y).0
+        } else {
+            f64::NAN
+        }
+    };
     Exponents {
-        step_s: fit(&|r| r.step_s),
-        dr_steps: fit(&|r| r.dr_steps as f64),
+        step_s: fit(&|r| Some(r.step_s)),
+        dr_steps: fit(&|r| r.dr_steps.map(|s| s as f64)),
         dr_s: fit(&|r| r.dr_s),
-        fem_s: fit(&|r| r.fem_s),
+        pcg_iterations: fit(&|r| Some(r.pcg_iterations as f64)),
+        pcg_s: fit(&|r| Some(r.pcg_s)),
+        fem_s: fit(&|r| Some(r.fem_s)),
     }
 }
 

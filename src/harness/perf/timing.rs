@@ -1,6 +1,7 @@
 //! The timers of the solvers, on a built model or a scene: one explicit step
 //! ([`time_steps`]: the median of 5 batches after a warm-up), dynamic
-//! relaxation from rest to the scene's tolerance ([`time_dr`]: one run), and
+//! relaxation from rest to the scene's tolerance ([`time_dr`]: one run),
+//! conjugate gradients to the same tolerance ([`time_pcg`]: one run), and
 //! the implicit FEM solve of the same mesh ([`time_fem`]: the best of a few
 //! end-to-end solves). Wall-clock times on whatever else the machine is
 //! doing.
@@ -13,7 +14,8 @@ use super::bytes::step_bytes;
 use crate::error::Error;
 use crate::model::Model;
 use crate::scene::Scene;
-use crate::solver::{Solver, SolverParams, State};
+use crate::solver::relax::unobserved;
+use crate::solver::{ElasticSolver, Pcg, Solver, SolverParams, State, StopRules};
 
 /// One step's cost on a model.
 #[derive(Debug, Clone, Serialize)]
@@ -70,14 +72,56 @@ pub struct DrFigure {
     pub max_abs_uz: f64,
 }
 
-/// Relaxes `model` from rest with `params` once, as phase 1 of a run does
-/// (to the tolerance or `params.max_steps`), without history rows.
+/// Relaxes `model` from rest with `params` once by dynamic relaxation
+/// (whatever `params.elastic` says), as phase 1 of a run does (to the
+/// tolerance or `params.max_steps`), without history rows.
 pub fn time_dr(model: &Model, params: &SolverParams) -> Result<DrFigure, Error> {
+    let params = SolverParams { elastic: ElasticSolver::Dr, ..params.clone() };
     let t = Instant::now();
-    let (state, report) = crate::drivers::run::relax_elastic(model, params, usize::MAX)?;
+    let (state, report) = crate::drivers::run::relax_elastic(model, &params, usize::MAX)?;
     let seconds = t.elapsed().as_secs_f64();
     let max_abs_uz = state.u.chunks(3).map(|d| d[2].abs()).fold(0.0, f64::max);
     Ok(DrFigure { converged: report.converged, steps: report.steps, seconds, max_abs_uz })
+}
+
+/// The elastic phase by two-level PCG from rest to the scene's tolerance.
+#[derive(Debug, Clone, Serialize)]
+pub struct PcgFigure {
+    pub converged: bool,
+    pub iterations: usize,
+    /// Both levels built: node blocks, coarse assembly and factorisation (s).
+    pub setup_s: f64,
+    /// `setup_s` plus the iterations; the model is built (s).
+    pub seconds: f64,
+    pub max_abs_uz: f64,
+    /// Coarse unknowns (free components of the merged mesh).
+    pub coarse_dofs: usize,
+}
+
+/// Solves the elastic phase of `model` from rest with PCG once (to
+/// `params.tolerance` or `params.max_steps` iterations), without history rows.
+pub fn time_pcg(model: &Model, params: &SolverParams) -> Result<PcgFigure, Error> {
+    let t = Instant::now();
+    let mut pcg = Pcg::new(model)?;
+    let setup_s = t.elapsed().as_secs_f64();
+    let mut state = State::new(model);
+    let rules = StopRules {
+        tolerance: params.tolerance,
+        max_steps: crate::solver::budget::pcg_budget(model, params),
+        sliding: None,
+        history_every: usize::MAX,
+    };
+    let report = pcg.solve(model, &mut state, &rules, &mut unobserved)?;
+    let seconds = t.elapsed().as_secs_f64();
+    let max_abs_uz = state.u.chunks(3).map(|d| d[2].abs()).fold(0.0, f64::max);
+    Ok(PcgFigure {
+        converged: report.converged,
+        iterations: report.steps,
+        setup_s,
+        seconds,
+        max_abs_uz,
+        coarse_dofs: pcg.coarse_unknowns(),
+    })
 }
 
 /// The FEM solve of the scene end to end (`fem::solve_scene`: read, perturb,
