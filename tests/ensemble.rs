@@ -184,3 +184,25 @@ fn ensemble_errors_name_the_key() {
         cdem().args(["ensemble", "verification/ensemble/cohesive-segment.toml", "--shard", "3/2"]).output().unwrap();
     assert_eq!(o.status.code(), Some(2), "{}", String::from_utf8_lossy(&o.stderr));
 }
+
+/// Strength reduction per member: the block on a plane with a normal
+/// friction angle; each member's SRM FS is the analytic tan(phi_k) / tan(30
+/// deg) of its own draw within the SRM tolerance (references/srm.md).
+#[test]
+fn srm_members_match_the_analytic_fs_of_their_draws() {
+    let input = EnsembleInput::load(Path::new(reg::BLOCK_SRM_FRICTION.input)).unwrap();
+    let records = run_members(&input, input.default_seed(), 0..8, &mut |_| {}).unwrap();
+    for r in &records {
+        let phi = r.draws[0].value;
+        let exact = phi.to_radians().tan() / 30f64.to_radians().tan();
+        let fs = r.fs.expect("a bracket");
+        assert_eq!(r.srm.as_ref().unwrap().fs, Some(fs));
+        assert!(
+            ((fs - exact) / exact).abs() < reg::TOL_SRM_BLOCK,
+            "member {}: phi {phi}, SRM {fs}, exact {exact}",
+            r.member
+        );
+    }
+    let phis: Vec<f64> = records.iter().map(|r| r.draws[0].value).collect();
+    assert!(phis.windows(2).all(|w| w[0] != w[1]), "draws differ: {phis:?}");
+}

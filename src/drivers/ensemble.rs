@@ -98,10 +98,22 @@ pub struct MemberRecord {
     /// The perturbation seed (a scene with `[perturbation]`), else the seed of its draws.
     pub seed: u64,
     pub draws: Vec<Draw>,
-    /// The headline factor of safety: the LEM's Bishop FS (else Spencer's, else ordinary).
+    /// The headline factor of safety: the strength-reduction FS with `"srm"`,
+    /// else the LEM's Bishop FS (else Spencer's, else ordinary).
     pub fs: Option<f64>,
     pub lem: Option<LemMember>,
     pub cdem: Option<CdemMember>,
+    /// Strength reduction (`analyses` with `"srm"`).
+    pub srm: Option<SrmMember>,
+}
+
+/// The strength reduction of one member.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SrmMember {
+    /// Midpoint of the final bracket; None without one.
+    pub fs: Option<f64>,
+    pub bracket: [Option<f64>; 2],
+    pub trials: usize,
 }
 
 fn fnv1a(bytes: &[u8]) -> u64 {
@@ -173,8 +185,12 @@ impl EnsembleInput {
             None if has_lem => vec![Analysis::Cdem, Analysis::Lem],
             None => vec![Analysis::Cdem],
         };
-        if analyses.contains(&Analysis::Cdem) && !is_scene {
-            return Err(SceneError::invalid("ensemble.analyses", "\"cdem\" needs a scene (a file with [mesh])").into());
+        if (analyses.contains(&Analysis::Cdem) || analyses.contains(&Analysis::Srm)) && !is_scene {
+            return Err(SceneError::invalid(
+                "ensemble.analyses",
+                "\"cdem\" and \"srm\" need a scene (a file with [mesh])",
+            )
+            .into());
         }
         if analyses.contains(&Analysis::Lem) && !has_lem {
             return Err(SceneError::invalid("ensemble.analyses", "\"lem\" needs a [lem] table in the scene").into());
@@ -349,7 +365,7 @@ pub fn run_member(
         }
         other => other,
     };
-    let mut record = MemberRecord { member: k, seed, draws: draws.clone(), fs: None, lem: None, cdem: None };
+    let mut record = MemberRecord { member: k, seed, draws: draws.clone(), fs: None, lem: None, cdem: None, srm: None };
     if input.analyses.contains(&Analysis::Lem) {
         let mut lem_input = lem_input_of(input, &text).map_err(member_error)?;
         if let Some(c) = circle {
@@ -404,6 +420,12 @@ pub fn run_member(
         }
         record.cdem = Some(m);
     }
+    if input.analyses.contains(&Analysis::Srm) {
+        let scene = Scene::from_toml(&text, &input.base_dir, &input.path).map_err(|e| member_error(e.into()))?;
+        let (r, _) = super::run_srm(&scene, &mut |_| {}).map_err(member_error)?;
+        record.fs = r.fs;
+        record.srm = Some(SrmMember { fs: r.fs, bracket: r.bracket, trials: r.trials.len() });
+    }
     Ok(record)
 }
 
@@ -417,7 +439,7 @@ pub fn run_members(
     progress: &mut dyn FnMut(usize),
 ) -> crate::Result<Vec<MemberRecord>> {
     let circle = mean_critical_circle(input)?;
-    let parallel = !input.analyses.contains(&Analysis::Cdem);
+    let parallel = input.analyses == [Analysis::Lem];
     let batch = if parallel { 256 } else { 1 };
     let mut out = Vec::with_capacity(range.len());
     let ks: Vec<usize> = range.collect();
@@ -493,7 +515,11 @@ pub fn aggregate(
         analyses: analyses.to_vec(),
         lem_surface: lem_surface.filter(|_| has_lem),
         lem_circle: lem_circle.map(|c| [c.xc, c.zc, c.r]),
-        fs_source: has_lem.then_some("LEM Bishop simplified (else Spencer, else ordinary)"),
+        fs_source: if analyses.contains(&Analysis::Srm) {
+            Some("strength reduction (cdem srm)")
+        } else {
+            has_lem.then_some("LEM Bishop simplified (else Spencer, else ordinary)")
+        },
         members_without_fs: records.len() - fs.len(),
         fs: stats::distribution(&fs),
         reliability: stats::reliability(&fs),

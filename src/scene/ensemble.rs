@@ -5,7 +5,8 @@
 //! [ensemble]
 //! members = 200                  # default of --members
 //! seed = 1                       # default of --seed (BASE)
-//! analyses = ["cdem", "lem"]     # default: "cdem" for a scene (+ "lem" with [lem]), "lem" for a LEM file
+//! analyses = ["cdem", "lem"]     # default: "cdem" for a scene (+ "lem" with [lem]), "lem" for a LEM file;
+//!                                # "srm": strength reduction per member (its FS is the headline FS)
 //! lem_surface = "critical"       # "critical": every member on the mean critical circle; "search": its own
 //!
 //! [[ensemble.random]]            # a strength drawn per member, as Slide's probabilistic analysis
@@ -44,6 +45,9 @@ pub enum Analysis {
     Cdem,
     /// The LEM of the member's `[lem]` table (or LEM file).
     Lem,
+    /// Strength reduction of the member's scene (`cdem srm`): its FS is the
+    /// member's headline FS.
+    Srm,
 }
 
 /// Slide's two modes: the critical surface of the mean values, or a search per member.
