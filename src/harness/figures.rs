@@ -218,14 +218,35 @@ impl ColourScale {
             return Self { lo: 0.0, hi: 1.0, diverging: false, bands };
         }
         let m = lo.abs().max(hi.abs());
-        // Both signs beyond rounding: diverging, symmetric about zero.
-        if lo < -1e-3 * m && hi > 1e-3 * m {
-            let bands = bands.map(|b| b + b % 2); // zero on a band edge
-            return Self { lo: -m, hi: m, diverging: true, bands };
+        // Both signs, the lesser beyond 5 % of the greater: diverging,
+        // symmetric about zero. Otherwise sequential from the zero end (a
+        // few values of the other sign, e.g. a crest element in slight
+        // tension, stay on the bar past zero).
+        if lo < 0.0 && hi > 0.0 && lo.abs().min(hi) > 0.05 * m {
+            let mut sc = Self { lo: -m, hi: m, diverging: true, bands };
+            sc.round_bands();
+            return sc;
         }
-        let (lo, hi) = if hi <= 1e-3 * m { (lo, hi.max(0.0)) } else { (lo.min(0.0), hi) };
+        let (lo, hi) = if hi <= 0.05 * m { (lo, hi.max(0.0)) } else { (lo.min(0.0), hi) };
         let (lo, hi) = if hi > lo { (lo, hi) } else { (lo - 0.5 * m.max(1e-30), hi + 0.5 * m.max(1e-30)) };
-        Self { lo, hi, diverging: false, bands }
+        let mut sc = Self { lo, hi, diverging: false, bands };
+        sc.round_bands();
+        sc
+    }
+    /// Banded: bands of a round width (1, 2, 2.5 or 5 x 10^k) about
+    /// `bands` of them across the range, which is widened to whole bands
+    /// (a diverging scale keeps zero on a band edge).
+    fn round_bands(&mut self) {
+        let Some(b) = self.bands.filter(|&b| b > 0) else { return };
+        let raw = (self.hi - self.lo) / b as f64;
+        let p = 10f64.powf(raw.log10().floor());
+        let w =
+            [1.0, 2.0, 2.5, 5.0, 10.0].into_iter().map(|m| m * p).find(|&w| w >= raw * (1.0 - 1e-12)).unwrap_or(raw);
+        let (lo, hi) = ((self.lo / w - 1e-9).floor() * w, (self.hi / w + 1e-9).ceil() * w);
+        let (lo, hi) = if self.diverging { (-(hi.max(-lo)), hi.max(-lo)) } else { (lo, hi) };
+        self.lo = lo;
+        self.hi = hi;
+        self.bands = Some(((hi - lo) / w).round().max(1.0) as usize);
     }
     /// Position of `v` on the bar, 0 at `lo`, 1 at `hi`, snapped to the
     /// middle of its band when banded.
@@ -240,7 +261,7 @@ impl ColourScale {
         let t = self.position(v);
         if self.diverging {
             colormap(t)
-        } else if self.hi <= 0.0 {
+        } else if self.hi.abs() < self.lo.abs() {
             // A non-positive field: zero (hi) light, the most negative dark.
             sequential(1.0 - t)
         } else {
@@ -253,7 +274,7 @@ impl ColourScale {
 /// decimals as the spacing needs, and rounding residue of zero as 0.
 pub fn tick_label(v: f64, span: f64) -> String {
     let step = (span.abs() / 6.0).max(1e-300);
-    let decimals = (1.0 - step.log10().floor()).clamp(0.0, 6.0) as usize;
+    let decimals = (-step.log10().floor()).clamp(0.0, 6.0) as usize;
     let s = format!("{:.*}", decimals, snap_zero(v, span));
     if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
         s[1..].to_string()
@@ -349,7 +370,7 @@ pub fn contour_panels(
     let ph = ((plot_w * (z1 - z0) / (x1 - x0)) + 85.0).clamp(250.0, 1200.0) as u32;
     let head = if title.is_empty() { 0 } else { 45 };
     let foot = 10 + 24 * style.notes.len() as u32;
-    let bar_w = 150;
+    let bar_w = 200;
     let (w, h) = (pw * cols as u32 + bar_w, head + ph * rows as u32 + foot);
     let root = BitMapBackend::new(path, (w, h)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| plot_err(path, e))?;
@@ -418,7 +439,7 @@ where
 {
     let (v0, v1) = (scale.lo, scale.hi);
     let mut cb = ChartBuilder::on(area)
-        .margin_top(70)
+        .margin_top(50)
         .margin_bottom(55)
         .margin_right(10)
         .margin_left(5)
@@ -508,12 +529,14 @@ pub fn slip_profile(path: &Path, fig: &SlipProfile) -> Result<(), Error> {
         .disable_mesh()
         .x_desc("x (m)")
         .y_desc("z (m)")
+        .x_label_formatter(&|v| tick_label(*v, x1 - x0))
+        .y_label_formatter(&|v| tick_label(*v, z1 - z0))
         .label_style(("sans-serif", 14))
         .draw()
         .map_err(|e| plot_err(path, e))?;
-    sec.draw_series(fig.section.iter().map(|p| {
-        Polygon::new(p.corners.clone(), if p.value > 0.5 { mass } else { ground }.filled())
-    }))
+    sec.draw_series(
+        fig.section.iter().map(|p| Polygon::new(p.corners.clone(), if p.value > 0.5 { mass } else { ground }.filled())),
+    )
     .map_err(|e| plot_err(path, e))?;
     let edge = RGBColor(150, 150, 150);
     sec.draw_series(
@@ -522,7 +545,8 @@ pub fn slip_profile(path: &Path, fig: &SlipProfile) -> Result<(), Error> {
             .map(|p| PathElement::new(p.corners.iter().chain(p.corners.first()).copied().collect::<Vec<_>>(), edge)),
     )
     .map_err(|e| plot_err(path, e))?;
-    sec.draw_series(LineSeries::new(fig.surface.iter().copied(), RED.stroke_width(3))).map_err(|e| plot_err(path, e))?;
+    sec.draw_series(LineSeries::new(fig.surface.iter().copied(), RED.stroke_width(3)))
+        .map_err(|e| plot_err(path, e))?;
     // Zone letters on the surface, just below it, and their boundaries.
     let z_at = |x: f64| -> Option<f64> {
         fig.surface.windows(2).find(|w| (w[0].0 - x) * (w[1].0 - x) <= 0.0).map(|w| {
@@ -592,7 +616,7 @@ pub fn slip_profile(path: &Path, fig: &SlipProfile) -> Result<(), Error> {
         prof.draw_series(LineSeries::new([(x0, y), (x1, y)], c.stroke_width(2))).map_err(|e| plot_err(path, e))?;
         prof.draw_series(std::iter::once(Text::new(
             label.to_string(),
-            (x0 + 0.01 * (x1 - x0), y + 0.01 * (y1 - y0)),
+            (x1 - 0.06 * (x1 - x0), y + 0.045 * (y1 - y0)),
             ("sans-serif", 15).into_font().color(&c),
         )))
         .map_err(|e| plot_err(path, e))?;
@@ -606,9 +630,13 @@ pub fn slip_profile(path: &Path, fig: &SlipProfile) -> Result<(), Error> {
             .label(s.name)
             .legend(move |(x, y)| Circle::new((x + 10, y), 4, c.filled()));
         prof.draw_series(inside.iter().map(|&p| Circle::new(p, 3, c.filled()))).map_err(|e| plot_err(path, e))?;
-        prof.draw_series(clipped.iter().zip(s.points).filter(|(q, p)| q.1 != p.1).map(|(&q, _)| {
-            TriangleMarker::new(q, 6, c.filled())
-        }))
+        prof.draw_series(
+            clipped
+                .iter()
+                .zip(s.points)
+                .filter(|(q, p)| q.1 != p.1)
+                .map(|(&q, _)| TriangleMarker::new(q, 6, c.filled())),
+        )
         .map_err(|e| plot_err(path, e))?;
     }
     prof.configure_series_labels()
@@ -649,9 +677,10 @@ mod tick_tests {
     fn tick_labels_carry_the_decimals_their_spacing_needs() {
         use super::tick_label;
         assert_eq!(tick_label(-800.0, 800.0), "-800");
-        assert_eq!(tick_label(-12.5, 42.0), "-12.5");
-        assert_eq!(tick_label(0.25, 1.0), "0.25");
-        assert_eq!(tick_label(-3.0e-17, 1.0), "0.00");
+        assert_eq!(tick_label(20.0, 42.0), "20");
+        assert_eq!(tick_label(-12.5, 4.2), "-12.5");
+        assert_eq!(tick_label(0.2, 1.0), "0.2");
+        assert_eq!(tick_label(-3.0e-17, 1.0), "0.0");
     }
 
     #[test]
@@ -660,13 +689,18 @@ mod tick_tests {
         let neg = ColourScale::of([-780.0, -400.0, -5.0].into_iter(), None);
         assert!(!neg.diverging);
         assert_eq!((neg.lo, neg.hi), (-780.0, 0.0));
+        // A little tension (under 5 %) keeps the map sequential.
+        let nearly = ColourScale::of([-780.0, 30.0].into_iter(), Some(10));
+        assert!(!nearly.diverging);
+        assert_eq!((nearly.lo, nearly.hi, nearly.bands), (-800.0, 100.0, Some(9)));
         // The most compressive is the dark end, zero the light end.
         let lum = |c: plotters::style::RGBColor| 0.3 * c.0 as f64 + 0.59 * c.1 as f64 + 0.11 * c.2 as f64;
         assert!(lum(neg.colour(-780.0)) < lum(neg.colour(0.0)));
         let signed = ColourScale::of([-2.0, 0.5, 1.0].into_iter(), Some(9));
         assert!(signed.diverging);
-        assert_eq!((signed.lo, signed.hi, signed.bands), (-2.0, 2.0, Some(10)));
-        assert_eq!(signed.position(0.0), 0.55);
-        assert_eq!(signed.position(-1e-9), 0.45);
+        // Bands 0.5 wide from -2 to 2: zero on a band edge.
+        assert_eq!((signed.lo, signed.hi, signed.bands), (-2.0, 2.0, Some(8)));
+        assert_eq!(signed.position(0.0), 0.5625);
+        assert_eq!(signed.position(-1e-9), 0.4375);
     }
 }

@@ -324,10 +324,8 @@ fn fig9(
     let s: Vec<f64> = springs.0.iter().map(|p| p.s).collect();
     let segs = sign_segments(&s, &springs.1.k_i, reg::MIN_SEGMENT);
     let sign = |g: i8| if g > 0 { "+" } else { "-" };
-    let strip: Vec<Span> = segs
-        .iter()
-        .map(|g| Span { x0: to_x(g.s0), x1: to_x(g.s1), label: format!("sign {}", sign(g.sign)) })
-        .collect();
+    let strip: Vec<Span> =
+        segs.iter().map(|g| Span { x0: to_x(g.s0), x1: to_x(g.s1), label: format!("sign {}", sign(g.sign)) }).collect();
     let zones = weak_zones(springs.0, &springs.1.k_i);
     let (mut shaded, mut unshaded) = (Vec::new(), Vec::new());
     for (k, z) in zones.iter().enumerate() {
@@ -343,7 +341,8 @@ fn fig9(
     let beyond = ki_sp.iter().chain(&ki_fem).filter(|p| p.1 < y_range.0 || p.1 > y_range.1).count();
     let section: Vec<Patch> = front_patches(&rs.model, |e| {
         let c = rs.model.elements.corners(e);
-        let (x, z) = c.iter().fold((0.0, 0.0), |m, &i| (m.0 + rs.model.x0[i as usize][0], m.1 + rs.model.x0[i as usize][2]));
+        let (x, z) =
+            c.iter().fold((0.0, 0.0), |m, &i| (m.0 + rs.model.x0[i as usize][0], m.1 + rs.model.x0[i as usize][2]));
         let (x, z) = (x / c.len() as f64, z / c.len() as f64);
         let circle = reg::SLIP_CIRCLE;
         f64::from((x - circle.xc).hypot(z - circle.zc) < reg::slip_circle_radius())
@@ -528,7 +527,16 @@ pub fn chosen_stages(stages: &[crate::drivers::Stage]) -> Vec<usize> {
     let full = (0..n).find(|&k| failed(k) >= last).unwrap_or(n - 1);
     let mut idx = vec![first, half, full, n - 1];
     idx.dedup();
-    // Fill to four with the middle of the widest gap.
+    // Fewer than four: add where the displacement since phase 1 reaches half
+    // its final value, then the middle of the widest gap.
+    if idx.len() < 4 {
+        let d_end = stages[n - 1].max_displacement;
+        let moved = (0..n).find(|&k| stages[k].max_displacement >= 0.5 * d_end).unwrap_or(n / 2);
+        if !idx.contains(&moved) {
+            idx.push(moved);
+            idx.sort_unstable();
+        }
+    }
     while idx.len() < 4 {
         let (g, _) = idx.windows(2).enumerate().max_by_key(|(_, w)| w[1] - w[0]).expect("two stages");
         if idx[g + 1] - idx[g] < 2 {
@@ -556,7 +564,7 @@ fn deformation_scale(width: f64, max_u: f64) -> f64 {
 /// Fig. 10 / Fig. 14: the displacement since phase 1 (|u|, mm) at four
 /// stages of the failure sequence ([`chosen_stages`]), on the deformed shape
 /// (one scale for all four), with the failed joints drawn: open (more than
-/// 2 mm) in red, failed and closed (slipped) in white; one colour scale for
+/// 2 mm) in red, failed and closed (slipped) in black; one colour scale for
 /// the figure. Returns `(title, file)`: one file `<prefix>-stages.png`.
 pub fn stage_figures(
     r: &RunResult,
@@ -573,12 +581,9 @@ pub fn stage_figures(
     let traces = front_joint_traces(model);
     let width = model.x0.iter().map(|p| p[0]).fold(f64::NEG_INFINITY, f64::max)
         - model.x0.iter().map(|p| p[0]).fold(f64::INFINITY, f64::min);
-    let max_u = idx
-        .iter()
-        .flat_map(|&k| snapshots.u[k].chunks(3).map(|d| d[0].hypot(d[2])))
-        .fold(0.0, f64::max);
+    let max_u = idx.iter().flat_map(|&k| snapshots.u[k].chunks(3).map(|d| d[0].hypot(d[2]))).fold(0.0, f64::max);
     let scale = deformation_scale(width, max_u);
-    let (open_c, slip_c) = (RGBColor(230, 20, 20), RGBColor(255, 255, 255));
+    let (open_c, slip_c) = (RGBColor(230, 20, 20), RGBColor(0, 0, 0));
     let mut panels = Vec::new();
     for &k in &idx {
         let (st, u) = (&f.stages[k], &snapshots.u[k]);
@@ -594,10 +599,14 @@ pub fn stage_figures(
             }
             let open = t.springs.iter().any(|&s| spring_opening(model, u, s) > OPEN);
             let pts = t.springs.iter().map(|&s| spring_point(model, u, scale, s)).collect();
-            lines.push(Line { points: pts, colour: if open { open_c } else { slip_c }, width: if open { 3 } else { 2 } });
+            lines.push(Line {
+                points: pts,
+                colour: if open { open_c } else { slip_c },
+                width: if open { 3 } else { 2 },
+            });
         }
         let title = format!(
-            "step {}: {} failed ({} tension, {} shear), max |u| since phase 1 {:.0} mm",
+            "step {}: {} failed ({} tension, {} shear); max |u| since phase 1: {:.0} mm",
             st.step,
             st.failed_tension + st.failed_shear,
             st.failed_tension,
@@ -613,7 +622,7 @@ pub fn stage_figures(
         panel_width: 760,
         notes: vec![format!(
             "Deformed shape, displacement x {scale}. Failed joints on the front face: red = open (> 2 mm), \
-             white = failed and closed (slipped). Colour: |u| since the end of phase 1, one scale for all panels."
+             black = failed and closed (slipped). Colour: |u| since the end of phase 1, one scale for all panels."
         )],
         ..ContourStyle::default()
     };
