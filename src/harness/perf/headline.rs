@@ -91,5 +91,14 @@ pub fn headline_with(
         };
         lem.push((case.to_string(), ours, py));
     }
-    Ok(Headline { stream_gbs, step_block, step_lumped, dr_block, fem_s, fem_dofs, lem, pyslope_timed_now: pyslope.is_some() })
+    Ok(Headline {
+        stream_gbs,
+        step_block,
+        step_lumped,
+        dr_block,
+        fem_s,
+        fem_dofs,
+        lem,
+        pyslope_timed_now: pyslope.is_some(),
+    })
 }
