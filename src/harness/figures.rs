@@ -1,5 +1,14 @@
 //! Figures drawn with plotters into PNG files: no Python, no system fonts
 //! (DejaVu Sans is embedded and registered once).
+//!
+//! - [`line_plot`]: series on linear or log axes;
+//! - [`contour_panels`]: a section's elements coloured by a field, several
+//!   panels on one colour scale ([`ColourScale`]: sequential from the zero
+//!   end for a one-signed field, diverging and centred on zero for a signed
+//!   one; banded on request), in kPa/MPa or mm ([`Quantity`]), with overlay
+//!   lines (joints); [`section_contour`] is its one-panel form;
+//! - [`slip_profile`]: Fig. 9, the section and slip surface above a profile
+//!   along x on one canvas.
 
 use std::path::Path;
 use std::sync::Once;
