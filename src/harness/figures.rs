@@ -251,7 +251,7 @@ impl ColourScale {
         let p = 10f64.powf(raw.log10().floor());
         let w =
             [1.0, 2.0, 2.5, 5.0, 10.0].into_iter().map(|m| m * p).find(|&w| w >= raw * (1.0 - 1e-12)).unwrap_or(raw);
-        let (lo, hi) = ((self.lo / w - 1e-9).floor() * w, (self.hi / w + 1e-9).ceil() * w);
+        let (lo, hi) = ((self.lo / w + 1e-9).floor() * w, (self.hi / w - 1e-9).ceil() * w);
         let (lo, hi) = if self.diverging { (-(hi.max(-lo)), hi.max(-lo)) } else { (lo, hi) };
         self.lo = lo;
         self.hi = hi;
