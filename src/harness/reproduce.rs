@@ -170,7 +170,7 @@ fn figs6_7_contours(rep: &mut Report, r: &RunResult, fem: &FemSolution) -> Resul
             },
         ];
         let png = format!("{file}.png");
-        let title = format!("{fig}: elastic slope, {name}, 10 bands");
+        let title = format!("{fig}: elastic slope, {name} (bands of a round width)");
         contour_panels(&rep.path(&png), &title, name, q, &panels, &banded)?;
         rep.figure(&title, &png);
         if !same {
