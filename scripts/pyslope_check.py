@@ -13,6 +13,8 @@ circles. So, for each case:
    with 50 and 500 slices: the same circle through two codes.
 3. Timing: pySlope's Bishop on the circles of our default 20 x 20 x 10 grid
    (centres and radii generated here exactly as src/lem/search.rs does).
+   `--time-grid CASE` does only this and prints one JSON line: `cdem perf
+   --pyslope PYTHON` runs it to time pySlope beside our search.
 
 Coordinates are reported in our frame (the section facing -x): pySlope's
 crest (tx, ty) maps to our crest (cx, cz) by x = cx + (tx - x_p),
@@ -162,7 +164,11 @@ def main():
     ap.add_argument("--ours", action="append", default=[], help="CASE=PATH of a `cdem lem` JSON")
     ap.add_argument("--iterations", type=int, default=10000, help="pySlope trial circles (its `iterations`)")
     ap.add_argument("--out", default="references/pyslope.json")
+    ap.add_argument("--time-grid", metavar="CASE", choices=sorted(CASES), help="only time our grid on CASE: print one JSON line (`cdem perf --pyslope`)")
     args = ap.parse_args()
+    if args.time_grid:
+        print(json.dumps({"case": args.time_grid, "pyslope_version": metadata.version("pyslope"), **time_grid(args.time_grid)}))
+        return
     ours = dict(a.split("=", 1) for a in args.ours)
     result = {
         "pyslope_version": metadata.version("pyslope"),

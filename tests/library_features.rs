@@ -2,7 +2,9 @@
 //! crates: `clap`, `indicatif`, `plotters` and `dejavu` are optional
 //! dependencies enabled only by the default feature `harness`, and the
 //! binary requires that feature. So
-//! `cargo tree --no-default-features -e normal` lists none of them.
+//! `cargo tree --no-default-features -e normal` lists none of them. The one
+//! other optional crate, `gungraun`, is for the instruction-count benches
+//! only (feature `iai`, in neither `default` nor `harness`).
 
 #[test]
 fn cli_and_plotting_crates_come_only_with_the_harness_feature() {
@@ -13,17 +15,24 @@ fn cli_and_plotting_crates_come_only_with_the_harness_feature() {
         let optional = deps[name].as_table().and_then(|t| t.get("optional")).and_then(|v| v.as_bool());
         assert_eq!(optional, Some(true), "{name} must be an optional dependency");
     }
+    let bench_only = ["gungraun"];
     for (name, spec) in deps {
         let optional = spec.as_table().and_then(|t| t.get("optional")).and_then(|v| v.as_bool()).unwrap_or(false);
-        assert!(!optional || harness_only.contains(&name.as_str()), "{name}: optional but not a harness crate");
+        assert!(
+            !optional || harness_only.contains(&name.as_str()) || bench_only.contains(&name.as_str()),
+            "{name}: optional but not a harness crate"
+        );
     }
     let features = manifest["features"].as_table().unwrap();
+    let iai: Vec<&str> = features["iai"].as_array().unwrap().iter().map(|v| v.as_str().unwrap()).collect();
+    assert!(iai.contains(&"dep:gungraun"), "feature iai lacks dep:gungraun");
     let harness: Vec<&str> = features["harness"].as_array().unwrap().iter().map(|v| v.as_str().unwrap()).collect();
     for name in harness_only {
         assert!(harness.contains(&format!("dep:{name}").as_str()), "feature harness lacks dep:{name}");
     }
     let default: Vec<&str> = features["default"].as_array().unwrap().iter().map(|v| v.as_str().unwrap()).collect();
     assert_eq!(default, ["harness"]);
+    assert!(!harness.contains(&"dep:gungraun"), "gungraun must stay out of the harness feature");
     let bins = manifest["bin"].as_array().unwrap();
     assert!(bins
         .iter()

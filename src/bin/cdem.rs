@@ -3,6 +3,7 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::time::{Duration, Instant};
 
 use clap::{Args, Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -82,6 +83,10 @@ enum Command {
         /// Skip the damping table (about 3 minutes).
         #[arg(long)]
         no_damping: bool,
+        /// A Python interpreter with pySlope installed (scripts/requirements-lem.txt): time pySlope
+        /// in the same run. Without it the LEM ratio uses pySlope's recorded time (references/pyslope.json).
+        #[arg(long, value_name = "PYTHON")]
+        pyslope: Option<PathBuf>,
     },
     /// Run every paper case and write DIR/report.md with the validation table and figures.
     Reproduce {
@@ -99,6 +104,56 @@ fn progress_bar(max: usize) -> ProgressBar {
         ProgressStyle::with_template("{spinner} step {pos} {msg} [{elapsed_precise}]").expect("valid template"),
     );
     pb
+}
+
+/// The progress of a long command (reproduce, study, perf): the harness
+/// names each stage through its callback; each is printed with the time
+/// since the start, and a spinner shows the current one with the elapsed
+/// time (on a terminal).
+struct Stages {
+    name: &'static str,
+    pb: ProgressBar,
+    t0: Instant,
+    last: Option<(String, Instant)>,
+}
+
+impl Stages {
+    fn new(name: &'static str) -> Self {
+        let pb = ProgressBar::new_spinner();
+        pb.set_style(
+            ProgressStyle::with_template("{spinner} [{elapsed_precise}] {prefix}: {msg}").expect("valid template"),
+        );
+        pb.set_prefix(name);
+        pb.enable_steady_tick(Duration::from_millis(250));
+        Self { name, pb, t0: Instant::now(), last: None }
+    }
+    fn line(&self, text: String) {
+        if self.pb.is_hidden() {
+            eprintln!("{text}");
+        } else {
+            self.pb.println(text);
+        }
+    }
+    /// Closes the previous stage (with its duration) and starts `what`.
+    fn stage(&mut self, what: &str) {
+        self.close();
+        self.line(format!("{}: [{:>7.1} s] {what}", self.name, self.t0.elapsed().as_secs_f64()));
+        self.pb.set_message(what.to_string());
+        self.last = Some((what.to_string(), Instant::now()));
+    }
+    fn close(&mut self) {
+        if let Some((what, t)) = self.last.take() {
+            let s = t.elapsed().as_secs_f64();
+            if s >= 1.0 {
+                self.line(format!("{}:             ({what}: {s:.1} s)", self.name));
+            }
+        }
+    }
+    fn finish(mut self) {
+        self.close();
+        self.pb.finish_and_clear();
+        eprintln!("{}: done in {:.1} s", self.name, self.t0.elapsed().as_secs_f64());
+    }
 }
 
 const EXIT_CODES: &str = "Exit codes:
@@ -196,20 +251,26 @@ fn main() -> ExitCode {
         }
         Command::Lem { input, out } => reached(lem(&input, out.as_deref())),
         Command::Ensemble(args) => reached(ensemble(args)),
-        Command::Study { out } => reached(
-            cdem::harness::study::run_study(&out, &mut |what| eprintln!("study: {what}"))
-                .map(|rows| eprintln!("study: {} points -> {}", rows.len(), out.join("study.csv").display())),
-        ),
-        Command::Perf { out, refine, dr_up_to, no_damping } => {
-            let mut opts = cdem::harness::perf::PerfOptions { damping: !no_damping, refine, ..Default::default() };
+        Command::Study { out } => {
+            let mut st = Stages::new("study");
+            let r = cdem::harness::study::run_study(&out, &mut |what| st.stage(what));
+            st.finish();
+            reached(r.map(|rows| eprintln!("study: {} points -> {}", rows.len(), out.join("study.csv").display())))
+        }
+        Command::Perf { out, refine, dr_up_to, no_damping, pyslope } => {
+            let mut opts =
+                cdem::harness::perf::PerfOptions { damping: !no_damping, refine, pyslope, ..Default::default() };
             opts.dr_up_to = dr_up_to.unwrap_or(opts.dr_up_to);
-            reached(
-                cdem::harness::perf::run_perf(Path::new("."), &out, &opts, &mut |what| eprintln!("perf: {what}"))
-                    .map(|md| println!("{md}")),
-            )
+            let mut st = Stages::new("perf");
+            let r = cdem::harness::perf::run_perf(Path::new("."), &out, &opts, &mut |what| st.stage(what));
+            st.finish();
+            reached(r.map(|md| println!("{md}")))
         }
         Command::Reproduce { out, regenerate } => {
-            reached(cdem::harness::reproduce::reproduce(&out, regenerate, &mut |what| eprintln!("reproduce: {what}")))
+            let mut st = Stages::new("reproduce");
+            let r = cdem::harness::reproduce::reproduce(&out, regenerate, &mut |what| st.stage(what));
+            st.finish();
+            reached(r)
         }
     };
     match result {

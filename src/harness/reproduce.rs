@@ -16,11 +16,19 @@ use crate::drivers::run_scene;
 use crate::drivers::{run_watched, RunResult, StageSnapshots};
 use crate::error::Error;
 use crate::fem::FemSolution;
-use crate::harness::figures::{line_plot, section_contour, Patch, Scale, Series};
+use crate::harness::figures::{
+    contour_panels, line_plot, slip_profile, ContourStyle, Line, Panel, Patch, Quantity, Scale, Series, SlipProfile,
+    Span,
+};
 use crate::harness::registry::{self as reg, Case};
 use crate::harness::report::{Check, Table};
-use crate::harness::section::{element_mean_displacement, front_patches, front_patches_of_cells};
+use crate::harness::section::{
+    element_mean_displacement, front_joint_traces, front_patches, front_patches_deformed, front_patches_of_cells,
+    spring_opening, spring_point,
+};
 use crate::harness::validation;
+use crate::model::Model;
+use plotters::style::RGBColor;
 
 /// Runs everything into `out` and writes `out/report.md`.
 pub fn reproduce(out: &Path, regenerate: bool, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
@@ -187,35 +195,80 @@ fn elastic_slope(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(),
     convergence_history(rep, &dr, pcg)
 }
 
-/// Figs. 6 (sigma_zz) and 7 (u_z) of the elastic slope, CDEM and FEM, on the front section.
+/// Figs. 6 (sigma_zz) and 7 (u_z) of the elastic slope on the front section:
+/// CDEM above FEM on one banded colour scale (as the paper's ANSYS-style
+/// plots), and CDEM - FEM per element on a diverging scale centred on zero
+/// (the two share the perturbed mesh, cell for cell).
 fn figs6_7_contours(rep: &mut Report, r: &RunResult, fem: &FemSolution) -> Result<(), Error> {
     let stress = r.stress.clone().unwrap_or_default();
-    let figs: [(&str, &str, Vec<Patch>); 4] = [
-        ("fig6-szz-cdem.png", "CDEM sigma_zz (Pa)", front_patches(&r.model, |e| stress[e][2])),
-        (
-            "fig6-szz-fem.png",
-            "FEM sigma_zz (Pa)",
-            front_patches_of_cells(&fem.coords, &fem.cells, |e| fem.stress[e][2]),
-        ),
-        (
-            "fig7-uz-cdem.png",
-            "CDEM u_z (m)",
-            front_patches(&r.model, |e| element_mean_displacement(&r.model, &r.state.u, e, 2)),
-        ),
-        (
-            "fig7-uz-fem.png",
-            "FEM u_z (m)",
-            front_patches_of_cells(&fem.coords, &fem.cells, |e| {
-                fem.cells[e].corners().iter().map(|&n| fem.u[3 * n + 2]).sum::<f64>()
-                    / fem.cells[e].corners().len() as f64
-            }),
-        ),
-    ];
-    for (file, title, patches) in &figs {
-        section_contour(&rep.path(file), title, title, patches, &[])?;
-        rep.figure(title, file);
+    let n = r.model.elements.len();
+    let cdem_szz: Vec<f64> = (0..n).map(|e| stress.get(e).map_or(f64::NAN, |s| s[2])).collect();
+    let fem_szz: Vec<f64> = fem.stress.iter().map(|s| s[2]).collect();
+    let cdem_uz: Vec<f64> = (0..n).map(|e| element_mean_displacement(&r.model, &r.state.u, e, 2)).collect();
+    let fem_uz: Vec<f64> = fem
+        .cells
+        .iter()
+        .map(|c| c.corners().iter().map(|&k| fem.u[3 * k + 2]).sum::<f64>() / c.corners().len() as f64)
+        .collect();
+    let same = same_cells(&r.model, fem);
+    let banded = ContourStyle { bands: Some(10), ..ContourStyle::default() };
+    for (fig, file, name, q, c, f) in [
+        ("Fig. 6", "fig6-szz", "sigma_zz", Quantity::Stress, &cdem_szz, &fem_szz),
+        ("Fig. 7", "fig7-uz", "u_z", Quantity::Displacement, &cdem_uz, &fem_uz),
+    ] {
+        let panels = [
+            Panel { title: format!("CDEM {name}"), patches: front_patches(&r.model, |e| c[e]), lines: Vec::new() },
+            Panel {
+                title: format!("FEM {name} (same perturbed mesh, continuous)"),
+                patches: front_patches_of_cells(&fem.coords, &fem.cells, |e| f[e]),
+                lines: Vec::new(),
+            },
+        ];
+        let png = format!("{file}.png");
+        let title = format!("{fig}: elastic slope, {name} (bands of a round width)");
+        contour_panels(&rep.path(&png), &title, name, q, &panels, &banded)?;
+        rep.figure(&title, &png);
+        if !same {
+            continue;
+        }
+        let max_f = f.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+        let max_d = c.iter().zip(f.iter()).fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
+        let (factor, unit) = q.display(max_f);
+        let diff = [Panel {
+            title: format!("CDEM - FEM, {name} per element"),
+            patches: front_patches(&r.model, |e| c[e] - f[e]),
+            lines: Vec::new(),
+        }];
+        let style = ContourStyle {
+            notes: vec![format!(
+                "largest |CDEM - FEM| {:.3} {unit} = {:.2} % of the largest |FEM {name}| ({:.1} {unit})",
+                max_d * factor,
+                100.0 * max_d / max_f,
+                max_f * factor
+            )],
+            ..ContourStyle::default()
+        };
+        let png = format!("{file}-diff.png");
+        let title = format!("{fig}: CDEM - FEM, {name}");
+        contour_panels(&rep.path(&png), &title, &format!("CDEM - FEM {name}"), q, &diff, &style)?;
+        rep.figure(&title, &png);
     }
     Ok(())
+}
+
+/// The CDEM elements are the FEM cells, in order (same corners' centroids).
+fn same_cells(model: &Model, fem: &FemSolution) -> bool {
+    let el = &model.elements;
+    el.len() == fem.cells.len()
+        && (0..el.len()).all(|e| {
+            let (a, b) = (el.corners(e), fem.cells[e].corners());
+            let mean = |pts: &mut dyn Iterator<Item = [f64; 3]>, n: usize| {
+                pts.fold([0.0; 3], |m, p| [m[0] + p[0], m[1] + p[1], m[2] + p[2]]).map(|v| v / n as f64)
+            };
+            let ca = mean(&mut a.iter().map(|&i| model.x0[i as usize]), a.len());
+            let cb = mean(&mut b.iter().map(|&i| fem.coords[i]), b.len());
+            a.len() == b.len() && (0..3).all(|k| (ca[k] - cb[k]).abs() <= 1e-9 * (1.0 + cb[k].abs()))
+        })
 }
 
 /// The convergence of the elastic slope (no paper figure): dynamic
@@ -296,33 +349,121 @@ fn slip_circle(rep: &mut Report, fs_lem: f64, progress: &mut dyn FnMut(&str)) ->
     fig9(rep, &rs, (&pts_sp, &k_sp), (&pts_fem, &k_fem))
 }
 
-/// Fig. 9: the slip surface on the u_z contours of the section, and K_i
-/// along it from toe to crest (CDEM springs, FEM stresses).
+/// Fig. 9 as in the paper, on one canvas: the section with the sliding mass
+/// and the slip surface above, K_i against x below (CDEM springs, FEM
+/// stresses), with the K = 1 and K = 0 lines, the sign segments in a strip
+/// and the K_i < 1 zones (lettered a, b, ... from the toe) shaded; the
+/// paper's ab -, bc +, cd -, de + beside ours.
 fn fig9(
     rep: &mut Report,
     rs: &RunResult,
     springs: (&[SurfacePoint], &SafetyFactors),
     fem: (&[SurfacePoint], &SafetyFactors),
 ) -> Result<(), Error> {
-    let clamped = |(pts, k): (&[SurfacePoint], &SafetyFactors)| -> Vec<(f64, f64)> {
-        pts.iter().zip(&k.k_i).map(|(p, &k)| (p.s, k.clamp(-5.0, 5.0))).collect()
+    let to_x = arc_x();
+    let profile = |(pts, k): (&[SurfacePoint], &SafetyFactors)| -> Vec<(f64, f64)> {
+        pts.iter().zip(&k.k_i).map(|(p, &k)| (to_x(p.s), k)).collect()
     };
-    let (ki_sp, ki_fem) = (clamped(springs), clamped(fem));
-    line_plot(
-        &rep.path("fig9-ki.png"),
-        "K_i along the slip surface, toe (s = 0) to crest (clamped to +-5)",
-        "s (m)",
-        "K_i",
-        &[Series { name: "CDEM springs", points: &ki_sp }, Series { name: "FEM stresses", points: &ki_fem }],
-        Scale::Linear,
-        Scale::Linear,
-    )?;
-    let p = front_patches(&rs.model, |e| element_mean_displacement(&rs.model, &rs.state.u, e, 2));
-    let title = "Slip surface (LEM critical circle) on u_z";
-    section_contour(&rep.path("fig9-surface.png"), title, "u_z (m)", &p, &[reg::slip_arc()])?;
-    rep.figure("slip surface", "fig9-surface.png");
-    rep.figure("K_i", "fig9-ki.png");
+    let (ki_sp, ki_fem) = (profile(springs), profile(fem));
+    let s: Vec<f64> = springs.0.iter().map(|p| p.s).collect();
+    let segs = sign_segments(&s, &springs.1.k_i, reg::MIN_SEGMENT);
+    let sign = |g: i8| if g > 0 { "+" } else { "-" };
+    let strip: Vec<Span> =
+        segs.iter().map(|g| Span { x0: to_x(g.s0), x1: to_x(g.s1), label: format!("sign {}", sign(g.sign)) }).collect();
+    let zones = weak_zones(springs.0, &springs.1.k_i);
+    let (mut shaded, mut unshaded) = (Vec::new(), Vec::new());
+    for (k, z) in zones.iter().enumerate() {
+        let span = Span { x0: to_x(z.1), x1: to_x(z.2), label: ((b'a' + k as u8) as char).to_string() };
+        if z.0 {
+            shaded.push(span);
+        } else {
+            unshaded.push(span);
+        }
+    }
+    // K_i is R_i / D_i and runs off where D_i changes sign: a fixed window.
+    let y_range = (-3.0, 6.0);
+    let beyond = ki_sp.iter().chain(&ki_fem).filter(|p| p.1 < y_range.0 || p.1 > y_range.1).count();
+    let section: Vec<Patch> = front_patches(&rs.model, |e| {
+        let c = rs.model.elements.corners(e);
+        let (x, z) =
+            c.iter().fold((0.0, 0.0), |m, &i| (m.0 + rs.model.x0[i as usize][0], m.1 + rs.model.x0[i as usize][2]));
+        let (x, z) = (x / c.len() as f64, z / c.len() as f64);
+        let circle = reg::SLIP_CIRCLE;
+        f64::from((x - circle.xc).hypot(z - circle.zc) < reg::slip_circle_radius())
+    });
+    let zone_text = |want: bool| {
+        zones
+            .iter()
+            .enumerate()
+            .filter(|z| z.1 .0 == want)
+            .map(|(k, z)| format!("{} x {:.0}-{:.0}", (b'a' + k as u8) as char, to_x(z.1), to_x(z.2)))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let notes = vec![
+        format!(
+            "Ours (CDEM springs, elastic): sign segments {}; K_i < 1 zones (shaded) {}; K_i >= 1 zones {}.",
+            segs.iter()
+                .map(|g| format!("{} x {:.0}-{:.0}", sign(g.sign), to_x(g.s0), to_x(g.s1)))
+                .collect::<Vec<_>>()
+                .join(", "),
+            zone_text(true),
+            zone_text(false)
+        ),
+        "The paper (its Fig. 9): ab -, bc +, cd -, de + (sign of K_i, toe to crest). Ours alternate in K_i against 1, \
+         not in sign."
+            .to_string(),
+        format!(
+            "Eq. 21: K = {:.3} (CDEM springs), {:.3} (FEM stresses). {beyond} stations beyond the window are drawn as \
+             triangles at its edge.",
+            springs.1.k, fem.1.k
+        ),
+    ];
+    let fig = SlipProfile {
+        title: "Fig. 9: safety factor K_i along the slip surface (LEM critical circle)",
+        section: &section,
+        surface: &reg::slip_arc(),
+        y_label: "K_i (eq. 22)",
+        series: &[Series { name: "CDEM springs", points: &ki_sp }, Series { name: "FEM stresses", points: &ki_fem }],
+        y_range,
+        levels: &[(1.0, "K = 1"), (0.0, "K = 0")],
+        strip: &strip,
+        shaded: &shaded,
+        unshaded: &unshaded,
+        notes: &notes,
+    };
+    slip_profile(&rep.path("fig9.png"), &fig)?;
+    rep.figure("Fig. 9: K_i along the slip surface", "fig9.png");
     Ok(())
+}
+
+/// The x of the point at arc length `s` from the toe on the slip circle.
+fn arc_x() -> impl Fn(f64) -> f64 {
+    let (c, r) = (reg::SLIP_CIRCLE, reg::slip_circle_radius());
+    let a0 = (c.toe[1] - c.zc).atan2(c.toe[0] - c.xc);
+    let end = *reg::slip_arc().last().expect("the arc has points");
+    let dir = ((end.1 - c.zc).atan2(end.0 - c.xc) - a0).signum();
+    move |s| c.xc + r * (a0 + dir * s / r).cos()
+}
+
+/// The slip surface cut where K_i crosses 1, from the toe, without merging:
+/// `(K_i < 1, s0, s1)` per zone; a zone starts halfway from the previous
+/// station (docs/method.md 4.3).
+fn weak_zones(pts: &[SurfacePoint], k_i: &[f64]) -> Vec<(bool, f64, f64)> {
+    let mut zones: Vec<(bool, f64, f64)> = Vec::new();
+    for (i, p) in pts.iter().enumerate() {
+        let weak = k_i[i] < 1.0;
+        let edge = if i == 0 { p.s } else { 0.5 * (pts[i - 1].s + p.s) };
+        match zones.last_mut() {
+            Some(z) if z.0 == weak => z.2 = p.s,
+            Some(z) => {
+                z.2 = edge;
+                zones.push((weak, edge, p.s));
+            }
+            None => zones.push((weak, edge, p.s)),
+        }
+    }
+    zones
 }
 
 /// Step 6, Fig. 10: progressive failure of the paper slope on its slip circle.
@@ -409,7 +550,66 @@ pub fn regenerate_meshes(progress: &mut dyn FnMut(&str)) -> Result<usize, Error>
     Ok(n)
 }
 
-/// Displacement (since `base`) contours of a progressive run at three stages.
+/// A failed joint opening more than this is drawn as open (m): the crack
+/// threshold of docs/method.md 4.4.
+const OPEN: f64 = 2e-3;
+
+/// Four stages of phase 2 chosen from its failure sequence: the first stage
+/// with a failed spring, the one where the failures are halfway from there
+/// to their final number, the first with the final number, and the last.
+/// Indices into the stages, increasing (fewer if there are fewer stages).
+pub fn chosen_stages(stages: &[crate::drivers::Stage]) -> Vec<usize> {
+    let n = stages.len();
+    if n <= 4 {
+        return (0..n).collect();
+    }
+    let failed = |k: usize| stages[k].failed_tension + stages[k].failed_shear;
+    let last = failed(n - 1);
+    let first = (0..n).find(|&k| failed(k) > 0).unwrap_or(0);
+    let f0 = failed(first);
+    let half = (0..n).find(|&k| 2 * failed(k) >= f0 + last).unwrap_or(n / 2);
+    let full = (0..n).find(|&k| failed(k) >= last).unwrap_or(n - 1);
+    let mut idx = vec![first, half, full, n - 1];
+    idx.dedup();
+    // Fewer than four: add where the displacement since phase 1 reaches half
+    // its final value, then the middle of the widest gap.
+    if idx.len() < 4 {
+        let d_end = stages[n - 1].max_displacement;
+        let moved = (0..n).find(|&k| stages[k].max_displacement >= 0.5 * d_end).unwrap_or(n / 2);
+        if !idx.contains(&moved) {
+            idx.push(moved);
+            idx.sort_unstable();
+        }
+    }
+    while idx.len() < 4 {
+        let (g, _) = idx.windows(2).enumerate().max_by_key(|(_, w)| w[1] - w[0]).expect("two stages");
+        if idx[g + 1] - idx[g] < 2 {
+            break;
+        }
+        idx.insert(g + 1, (idx[g] + idx[g + 1]) / 2);
+    }
+    idx
+}
+
+/// A deformation scale of 1, 2 or 5 x 10^k that draws `max_u` as about 4 %
+/// of `width` (at least 1).
+fn deformation_scale(width: f64, max_u: f64) -> f64 {
+    if max_u <= 0.0 || !max_u.is_finite() {
+        return 1.0;
+    }
+    let target = 0.04 * width / max_u;
+    if target <= 1.0 {
+        return 1.0;
+    }
+    let p = 10f64.powf(target.log10().floor());
+    [5.0, 2.0, 1.0].into_iter().map(|m| m * p).find(|&v| v <= target).unwrap_or(p)
+}
+
+/// Fig. 10 / Fig. 14: the displacement since phase 1 (|u|, mm) at four
+/// stages of the failure sequence ([`chosen_stages`]), on the deformed shape
+/// (one scale for all four), with the failed joints drawn: open (more than
+/// 2 mm) in red, failed and closed (slipped) in black; one colour scale for
+/// the figure. Returns `(title, file)`: one file `<prefix>-stages.png`.
 pub fn stage_figures(
     r: &RunResult,
     snapshots: &StageSnapshots,
@@ -417,20 +617,60 @@ pub fn stage_figures(
     prefix: &str,
 ) -> Result<Vec<(String, String)>, Error> {
     let Some(f) = &r.failure else { return Ok(Vec::new()) };
-    let n = f.stages.len();
-    let mut files = Vec::new();
-    if n == 0 {
-        return Ok(files);
+    let idx = chosen_stages(&f.stages);
+    if idx.is_empty() || snapshots.u.len() < f.stages.len() {
+        return Ok(Vec::new());
     }
-    for (tag, idx) in [("early", 0), ("middle", n / 2), ("end", n - 1)] {
-        let du: Vec<f64> = snapshots.u[idx].iter().zip(&f.u_elastic).map(|(a, b)| a - b).collect();
-        for (comp, name) in [(0, "u_x"), (2, "u_z")] {
-            let p = front_patches(&r.model, |e| element_mean_displacement(&r.model, &du, e, comp));
-            let file = format!("{prefix}-{tag}-{name}.png");
-            let title = format!("Phase 2, step {}: {name} since phase 1", f.stages[idx].step);
-            section_contour(&out.join(&file), &title, &format!("{name} (m)"), &p, &[])?;
-            files.push((title, file));
+    let model = &r.model;
+    let traces = front_joint_traces(model);
+    let width = model.x0.iter().map(|p| p[0]).fold(f64::NEG_INFINITY, f64::max)
+        - model.x0.iter().map(|p| p[0]).fold(f64::INFINITY, f64::min);
+    let max_u = idx.iter().flat_map(|&k| snapshots.u[k].chunks(3).map(|d| d[0].hypot(d[2]))).fold(0.0, f64::max);
+    let scale = deformation_scale(width, max_u);
+    let (open_c, slip_c) = (RGBColor(230, 20, 20), RGBColor(0, 0, 0));
+    let mut panels = Vec::new();
+    for &k in &idx {
+        let (st, u) = (&f.stages[k], &snapshots.u[k]);
+        let du: Vec<f64> = u.iter().zip(&f.u_elastic).map(|(a, b)| a - b).collect();
+        let patches = front_patches_deformed(model, u, scale, |e| {
+            element_mean_displacement(model, &du, e, 0).hypot(element_mean_displacement(model, &du, e, 2))
+        });
+        let mut lines = Vec::new();
+        for t in &traces {
+            let failed = t.springs.iter().any(|&s| f.failed_at[s].is_some_and(|at| at <= st.step));
+            if !failed {
+                continue;
+            }
+            let open = t.springs.iter().any(|&s| spring_opening(model, u, s) > OPEN);
+            let pts = t.springs.iter().map(|&s| spring_point(model, u, scale, s)).collect();
+            lines.push(Line {
+                points: pts,
+                colour: if open { open_c } else { slip_c },
+                width: if open { 3 } else { 2 },
+            });
         }
+        let title = format!(
+            "step {}: {} failed ({} tension, {} shear); max |u| since phase 1: {:.0} mm",
+            st.step,
+            st.failed_tension + st.failed_shear,
+            st.failed_tension,
+            st.failed_shear,
+            1e3 * st.max_displacement
+        );
+        panels.push(Panel { title, patches, lines });
     }
-    Ok(files)
+    let name = if prefix == "fig10" { "Fig. 10: paper slope" } else { "Fig. 14: Wulong" };
+    let title = format!("{name}, progressive failure at four stages of phase 2");
+    let style = ContourStyle {
+        columns: 2,
+        panel_width: 760,
+        notes: vec![format!(
+            "Deformed shape, displacement x {scale}. Failed joints on the front face: red = open (> 2 mm), \
+             black = failed and closed (slipped). Colour: |u| since the end of phase 1, one scale for all panels."
+        )],
+        ..ContourStyle::default()
+    };
+    let file = format!("{prefix}-stages.png");
+    contour_panels(&out.join(&file), &title, "|u| since phase 1", Quantity::Displacement, &panels, &style)?;
+    Ok(vec![(title, file)])
 }

@@ -47,3 +47,73 @@ pub fn element_mean_displacement(model: &Model, u: &[f64], e: usize, component: 
     let c = model.elements.corners(e);
     c.iter().map(|&i| u[3 * i as usize + component]).sum::<f64>() / c.len() as f64
 }
+
+/// One patch per CDEM element at its deformed position `x0 + scale u`.
+pub fn front_patches_deformed(model: &Model, u: &[f64], scale: f64, value: impl Fn(usize) -> f64) -> Vec<Patch> {
+    let el = &model.elements;
+    (0..el.len())
+        .map(|e| {
+            let pts: Vec<[f64; 3]> = el.corners(e).iter().map(|&i| model.x0[i as usize]).collect();
+            let mut patch = front_patch(&pts, value(e));
+            // Same corners, moved: front_patch keeps (x, z) of the front
+            // corners, so move each by the displacement of the copy there.
+            let ymid = pts.iter().map(|p| p[1]).sum::<f64>() / pts.len() as f64;
+            let front: Vec<usize> =
+                el.corners(e).iter().map(|&i| i as usize).filter(|&i| model.x0[i][1] < ymid).collect();
+            for c in patch.corners.iter_mut() {
+                if let Some(&i) = front.iter().find(|&&i| model.x0[i][0] == c.0 && model.x0[i][2] == c.1) {
+                    *c = (c.0 + scale * u[3 * i], c.1 + scale * u[3 * i + 2]);
+                }
+            }
+            patch
+        })
+        .collect()
+}
+
+/// A joint's trace on the front face: the two springs of one shared element
+/// face whose node copies lie on the front (lowest y) face.
+#[derive(Debug, Clone, Copy)]
+pub struct JointTrace {
+    pub springs: [usize; 2],
+}
+
+/// The joint traces on the front face, one per element face shared by two
+/// elements, in spring order.
+pub fn front_joint_traces(model: &Model) -> Vec<JointTrace> {
+    let el = &model.elements;
+    let mut owner = vec![usize::MAX; model.n_nodes()];
+    for e in 0..el.len() {
+        for &i in el.corners(e) {
+            owner[i as usize] = e;
+        }
+    }
+    let y_front = model.x0.iter().map(|p| p[1]).fold(f64::INFINITY, f64::min);
+    let tol = 1e-6 * (1.0 + y_front.abs());
+    let mut by_face: std::collections::BTreeMap<(usize, usize), Vec<usize>> = std::collections::BTreeMap::new();
+    let sp = &model.springs;
+    for s in 0..sp.len() {
+        let (a, b) = (sp.a[s] as usize, sp.b[s] as usize);
+        if (model.x0[a][1] - y_front).abs() <= tol {
+            by_face.entry((owner[a], owner[b])).or_default().push(s);
+        }
+    }
+    let mut traces: Vec<JointTrace> =
+        by_face.into_values().filter(|v| v.len() == 2).map(|v| JointTrace { springs: [v[0], v[1]] }).collect();
+    traces.sort_by_key(|t| t.springs[0]);
+    traces
+}
+
+/// Normal opening `(u_b - u_a) . n` of spring `s` (m, positive open).
+pub fn spring_opening(model: &Model, u: &[f64], s: usize) -> f64 {
+    let sp = &model.springs;
+    let (a, b, n) = (sp.a[s] as usize, sp.b[s] as usize, sp.normal[s]);
+    (0..3).map(|k| (u[3 * b + k] - u[3 * a + k]) * n[k]).sum()
+}
+
+/// The (x, z) of spring `s` at `x0 + scale u`, midway between its two copies.
+pub fn spring_point(model: &Model, u: &[f64], scale: f64, s: usize) -> (f64, f64) {
+    let sp = &model.springs;
+    let (a, b) = (sp.a[s] as usize, sp.b[s] as usize);
+    let p = |i: usize, k: usize| model.x0[i][k] + scale * u[3 * i + k];
+    (0.5 * (p(a, 0) + p(b, 0)), 0.5 * (p(a, 2) + p(b, 2)))
+}

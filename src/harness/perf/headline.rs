@@ -10,7 +10,7 @@ use std::path::Path;
 
 use serde::Serialize;
 
-use super::pyslope::{pyslope_seconds, time_lem_grid, LEM_CASES};
+use super::pyslope::{pyslope_seconds, time_lem_grid, time_pyslope_grid, LEM_CASES};
 use super::stream::stream_triad;
 use super::timing::{time_dr, time_fem, time_pcg, time_steps, DrFigure, PcgFigure, StepFigure};
 use crate::error::Error;
@@ -32,8 +32,11 @@ pub struct Headline {
     pub fem_s: f64,
     pub fem_dofs: usize,
     /// `(case, ours (s), pySlope (s))`: Bishop on the 20 x 20 x 10 grid,
-    /// one thread; pySlope's time from references/pyslope.json.
+    /// one thread; pySlope's time measured in this run if
+    /// [`Self::pyslope_timed_now`], else recorded in references/pyslope.json.
     pub lem: Vec<(String, f64, f64)>,
+    /// pySlope was timed in the same run (`cdem perf --pyslope PYTHON`).
+    pub pyslope_timed_now: bool,
 }
 
 impl Headline {
@@ -56,8 +59,21 @@ pub fn paper_slope(root: &Path) -> Result<(Scene, Model), Error> {
 }
 
 /// Measures the headline figures on the paper slope's `scene` and `model`
-/// ([`paper_slope`]) and the repository's LEM inputs under `root`.
+/// ([`paper_slope`]) and the repository's LEM inputs under `root`, with
+/// pySlope's recorded times.
 pub fn headline(root: &Path, scene: &Scene, model: &Model, progress: &mut dyn FnMut(&str)) -> Result<Headline, Error> {
+    headline_with(root, scene, model, None, progress)
+}
+
+/// [`headline`], with pySlope timed in the same run by `pyslope` (a Python
+/// interpreter with pySlope installed) when given.
+pub fn headline_with(
+    root: &Path,
+    scene: &Scene,
+    model: &Model,
+    pyslope: Option<&Path>,
+    progress: &mut dyn FnMut(&str),
+) -> Result<Headline, Error> {
     progress("stream triad");
     let stream_gbs = stream_triad(8 << 20, 10);
     progress("paper slope: step");
@@ -73,7 +89,24 @@ pub fn headline(root: &Path, scene: &Scene, model: &Model, progress: &mut dyn Fn
     for (case, input) in LEM_CASES {
         progress(&format!("LEM grid: {case}"));
         let ours = time_lem_grid(&root.join(input), 5)?;
-        lem.push((case.to_string(), ours, pyslope_seconds(&root.join("references/pyslope.json"), case)?));
+        let py = match pyslope {
+            Some(python) => {
+                progress(&format!("pySlope grid: {case} ({})", python.display()));
+                time_pyslope_grid(python, root, case, 3)?
+            }
+            None => pyslope_seconds(&root.join("references/pyslope.json"), case)?,
+        };
+        lem.push((case.to_string(), ours, py));
     }
-    Ok(Headline { stream_gbs, step_block, step_lumped, dr_block, pcg, fem_s, fem_dofs, lem })
+    Ok(Headline {
+        stream_gbs,
+        step_block,
+        step_lumped,
+        dr_block,
+        pcg,
+        fem_s,
+        fem_dofs,
+        lem,
+        pyslope_timed_now: pyslope.is_some(),
+    })
 }

@@ -12,7 +12,8 @@
 //! - [`timing`]: a step, dynamic relaxation to the scene's tolerance, PCG
 //!   to the same tolerance, the implicit FEM solve of the same mesh;
 //! - [`memory`]: peak resident memory of a stage (Linux);
-//! - [`pyslope`]: the LEM grid search against pySlope's recorded time;
+//! - [`pyslope`]: the LEM grid search against pySlope, timed in the same run
+//!   or from its recorded time;
 //! - [`headline`](mod@headline): the four figures on the paper slope;
 //! - [`damping`]: damping kind x mass scaling x block masses on one scene;
 //! - [`scaling`]: cost against size, fitted exponents;
@@ -39,8 +40,8 @@ pub mod timing;
 
 pub use bytes::step_bytes;
 pub use damping::{damping_table, DampingRow};
-pub use headline::{headline, paper_slope, Headline};
-pub use pyslope::{pyslope_grid_search, pyslope_seconds, time_lem_grid, LEM_CASES};
+pub use headline::{headline, headline_with, paper_slope, Headline};
+pub use pyslope::{pyslope_grid_search, pyslope_seconds, time_lem_grid, time_pyslope_grid, LEM_CASES};
 pub use scaling::{
     exponents, fit_power, scaling_meshes, scaling_study, slope_mesh, Exponents, ScalingRow, SLOPE_MESHES,
 };
@@ -61,11 +62,21 @@ pub struct PerfOptions {
     /// DR (block masses) is run up to this many elements (at 1e5 it takes
     /// about 16 minutes); PCG and the FEM at every size.
     pub dr_up_to: usize,
+    /// A Python interpreter with pySlope (scripts/requirements-lem.txt):
+    /// pySlope is then timed in the same run; without it the ratio uses
+    /// its recorded time.
+    pub pyslope: Option<std::path::PathBuf>,
 }
 
 impl Default for PerfOptions {
     fn default() -> Self {
-        Self { damping: true, refine: vec![0.5, 1.0, 2.0, 4.0, 7.0, 10.0], lumped_up_to: 4000, dr_up_to: usize::MAX }
+        Self {
+            damping: true,
+            refine: vec![0.5, 1.0, 2.0, 4.0, 7.0, 10.0],
+            lumped_up_to: 4000,
+            dr_up_to: usize::MAX,
+            pyslope: None,
+        }
     }
 }
 
@@ -79,7 +90,7 @@ const DAMPING_MAX_STEPS: usize = 400_000;
 pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn FnMut(&str)) -> Result<String, Error> {
     std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
     let (scene, model) = paper_slope(root)?;
-    let head = headline(root, &scene, &model, progress)?;
+    let head = headline_with(root, &scene, &model, opts.pyslope.as_deref(), progress)?;
     let damping =
         if opts.damping { damping_table(&model, &scene.solver, DAMPING_MAX_STEPS, progress) } else { Vec::new() };
     let meshes = scaling_meshes(root, &opts.refine, &out.join("meshes"), progress)?;

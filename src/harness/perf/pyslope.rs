@@ -44,3 +44,36 @@ pub fn pyslope_seconds(json: &Path, case: &str) -> Result<f64, Error> {
         .as_f64()
         .ok_or_else(|| Error::io(json, std::io::Error::other(format!("no cases.{case}.timing_our_grid.total_s"))))
 }
+
+/// pySlope's time for our grid on `case`, measured now: runs
+/// `python scripts/pyslope_check.py --time-grid CASE` under `root` (pySlope
+/// installed for that interpreter, scripts/requirements-lem.txt) and reads
+/// `total_s` from the JSON line it prints; the best of `repeats` (s).
+pub fn time_pyslope_grid(python: &Path, root: &Path, case: &str, repeats: usize) -> Result<f64, Error> {
+    let script = root.join("scripts/pyslope_check.py");
+    let mut best = f64::INFINITY;
+    for _ in 0..repeats.max(1) {
+        let out = std::process::Command::new(python)
+            .arg(&script)
+            .args(["--time-grid", case])
+            .current_dir(root)
+            .output()
+            .map_err(|e| Error::io(python, e))?;
+        let fail = |why: String| Error::io(&script, std::io::Error::other(why));
+        if !out.status.success() {
+            return Err(fail(format!(
+                "{} --time-grid {case} exited with {}: {}",
+                python.display(),
+                out.status,
+                String::from_utf8_lossy(&out.stderr).lines().last().unwrap_or("")
+            )));
+        }
+        let text = String::from_utf8_lossy(&out.stdout);
+        let line = text.lines().rev().find(|l| l.trim_start().starts_with('{')).unwrap_or("");
+        let v: serde_json::Value =
+            serde_json::from_str(line).map_err(|e| fail(format!("no JSON timing line in its output: {e}")))?;
+        let t = v["total_s"].as_f64().ok_or_else(|| fail("no total_s in its timing line".into()))?;
+        best = best.min(t);
+    }
+    Ok(best)
+}

@@ -49,10 +49,15 @@ impl Headline {
             self.fem_s,
             self.pcg_over_fem()
         );
+        let when = if self.pyslope_timed_now {
+            "pySlope timed in this run"
+        } else {
+            "pySlope's recorded time (references/pyslope.json, another day): `--pyslope PYTHON` times it now"
+        };
         for (case, ours, py) in &self.lem {
             let _ = writeln!(
                 md,
-                "| LEM Bishop grid 20x20x10, {case}: pySlope / ours | {py:.3} s / {:.2} ms = {:.0}x | >= 100x |",
+                "| LEM Bishop grid 20x20x10, {case}: pySlope / ours ({when}) | {py:.3} s / {:.2} ms = {:.0}x | >= 100x |",
                 1e3 * ours,
                 py / ours
             );
