@@ -39,8 +39,8 @@ fn mean_and_probability_of_failure_match_the_analytic_normal_case() {
     let pf = normal_cdf((1.0 - mean) / sd);
 
     let n = input.default_members();
-    let records = run_members(&input, input.default_seed(), 0..n, &mut |_| {}).unwrap();
     let circle = mean_critical_circle(&input).unwrap();
+    let records = run_members(&input, input.default_seed(), 0..n, circle, &mut |_| {}).unwrap();
     let s = aggregate("cohesive-segment", 7, &input.analyses, None, circle, &records);
     let (fs, r) = (s.fs.unwrap(), s.reliability.unwrap());
     println!(
@@ -175,7 +175,7 @@ fn ensemble_errors_name_the_key() {
     // Truncation bounds that exclude the distribution: an error naming the variable, not a hang.
     let p = write("bounds.toml", base.replace("std_dev = 4815.4004224962855", "std_dev = 1.0\nmin = 1e9\nmax = 2e9"));
     let input = EnsembleInput::load(&p).unwrap();
-    match run_members(&input, 1, 0..1, &mut |_| {}) {
+    match run_members(&input, 1, 0..1, mean_critical_circle(&input).unwrap(), &mut |_| {}) {
         Err(cdem::Error::Scene(SceneError::Invalid { key, .. })) => assert_eq!(key, "ensemble.random[0]"),
         other => panic!("{other:?}"),
     }
@@ -191,7 +191,7 @@ fn ensemble_errors_name_the_key() {
 #[test]
 fn srm_members_match_the_analytic_fs_of_their_draws() {
     let input = EnsembleInput::load(Path::new(reg::BLOCK_SRM_FRICTION.input)).unwrap();
-    let records = run_members(&input, input.default_seed(), 0..8, &mut |_| {}).unwrap();
+    let records = run_members(&input, input.default_seed(), 0..8, None, &mut |_| {}).unwrap();
     for r in &records {
         let phi = r.draws[0].value;
         let exact = phi.to_radians().tan() / 30f64.to_radians().tan();

@@ -6,9 +6,10 @@ use std::ops::ControlFlow;
 use std::path::Path;
 
 use cdem::drivers::build_model;
+use cdem::model::Model;
 use cdem::scene::Scene;
 use cdem::solver::relax::unobserved;
-use cdem::solver::{relax, Sliding, Solver, State, StepView, Stop, StopRules};
+use cdem::solver::{relax, RunReport, Sliding, Solver, State, StepView, Stop, StopRules};
 
 fn column() -> (cdem::model::Model, Solver, State, f64) {
     let scene = Scene::load(Path::new("verification/cases/column/column-merged.toml")).unwrap();
@@ -94,12 +95,9 @@ fn sliding_is_checked_on_its_cadence_and_after_the_tolerance() {
     assert_eq!((r.stop, r.steps), (Stop::Converged, 1));
 }
 
-#[test]
-fn sliding_by_rate_fires_when_the_mean_displacement_grows_without_decay_and_not_when_it_relaxes() {
-    // A reference that recedes: the model relaxes from rest toward its
-    // gravity settlement, so its mean displacement since the rest state
-    // grows at first and then stops; a decaying rate never meets the rule.
-    let (model, mut solver, mut state, tol) = column();
+/// Relaxes under the sliding-rate rule alone (rest state as reference, mass
+/// weights, windows of 20 steps, three growing windows, no floor, no bound).
+fn relax_with_rate_rule(solver: &mut Solver, model: &Model, state: &mut State, tol: f64) -> RunReport {
     let reference = vec![0.0; 3 * model.n_nodes()];
     let weights = model.mass.clone();
     let rule = Sliding {
@@ -110,14 +108,16 @@ fn sliding_by_rate_fires_when_the_mean_displacement_grows_without_decay_and_not_
         floor: 0.0,
         displacement: f64::INFINITY,
     };
-    let r = relax(
-        &mut solver,
-        &model,
-        &mut state,
-        &StopRules { sliding: Some(rule), ..rules(tol, 100_000) },
-        &mut unobserved,
-    )
-    .unwrap();
+    relax(solver, model, state, &StopRules { sliding: Some(rule), ..rules(tol, 100_000) }, &mut unobserved).unwrap()
+}
+
+#[test]
+fn sliding_by_rate_fires_when_the_mean_displacement_grows_without_decay_and_not_when_it_relaxes() {
+    // A reference that recedes: the model relaxes from rest toward its
+    // gravity settlement, so its mean displacement since the rest state
+    // grows at first and then stops; a decaying rate never meets the rule.
+    let (model, mut solver, mut state, tol) = column();
+    let r = relax_with_rate_rule(&mut solver, &model, &mut state, tol);
     assert_eq!(r.stop, Stop::Converged, "a relaxing model is not sliding");
 
     // Pulled by a load that never balances (no fixities): a rigid motion that
@@ -127,24 +127,7 @@ fn sliding_by_rate_fires_when_the_mean_displacement_grows_without_decay_and_not_
     let mut solver =
         Solver::new(&model, cdem::solver::SolverParams { block_mass: Some(false), ..Default::default() }).unwrap();
     let mut state = State::new(&model);
-    let reference = vec![0.0; 3 * model.n_nodes()];
-    let weights = model.mass.clone();
-    let rule = Sliding {
-        reference: &reference,
-        weights: &weights,
-        window: 20,
-        windows: 3,
-        floor: 0.0,
-        displacement: f64::INFINITY,
-    };
-    let r = relax(
-        &mut solver,
-        &model,
-        &mut state,
-        &StopRules { sliding: Some(rule), ..rules(tol, 100_000) },
-        &mut unobserved,
-    )
-    .unwrap();
+    let r = relax_with_rate_rule(&mut solver, &model, &mut state, tol);
     // Windows 2, 3 and 4 are the first three that can be compared with a previous one.
     assert_eq!((r.stop, r.steps), (Stop::Sliding, 80));
 }

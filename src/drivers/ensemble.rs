@@ -389,9 +389,13 @@ pub fn run_member(
             });
         }
     }
-    if input.analyses.contains(&Analysis::Cdem) {
-        let scene = Scene::from_toml(&text, &input.base_dir, &input.path).map_err(|e| member_error(e.into()))?;
-        let run = super::run_scene(&scene, &mut |_, _| {})?;
+    let scene = if input.analyses.iter().any(|a| matches!(a, Analysis::Cdem | Analysis::Srm)) {
+        Some(Scene::from_toml(&text, &input.base_dir, &input.path).map_err(|e| member_error(e.into()))?)
+    } else {
+        None
+    };
+    if let (true, Some(scene)) = (input.analyses.contains(&Analysis::Cdem), &scene) {
+        let run = super::run_scene(scene, &mut |_, _| {})?;
         let s = &run.summary;
         let phase1 = s.phase1.as_ref();
         let mut m = CdemMember {
@@ -420,9 +424,8 @@ pub fn run_member(
         }
         record.cdem = Some(m);
     }
-    if input.analyses.contains(&Analysis::Srm) {
-        let scene = Scene::from_toml(&text, &input.base_dir, &input.path).map_err(|e| member_error(e.into()))?;
-        let (r, _) = super::run_srm(&scene, &mut |_| {}).map_err(member_error)?;
+    if let (true, Some(scene)) = (input.analyses.contains(&Analysis::Srm), &scene) {
+        let (r, _) = super::run_srm(scene, &mut |_| {}).map_err(member_error)?;
         record.fs = r.fs;
         record.srm = Some(SrmMember { fs: r.fs, bracket: r.bracket, trials: r.trials.len() });
     }
@@ -430,15 +433,16 @@ pub fn run_member(
 }
 
 /// Runs the members `range` in order; LEM-only members in parallel (results
-/// in member order, independent of the thread count). `progress(done)` after
-/// each batch.
+/// in member order, independent of the thread count). `circle`: the mean
+/// critical circle ([`mean_critical_circle`], computed once by the caller,
+/// which also reports it). `progress(done)` after each batch.
 pub fn run_members(
     input: &EnsembleInput,
     base: u64,
     range: std::ops::Range<usize>,
+    circle: Option<lem::Circle>,
     progress: &mut dyn FnMut(usize),
 ) -> crate::Result<Vec<MemberRecord>> {
-    let circle = mean_critical_circle(input)?;
     let parallel = input.analyses == [Analysis::Lem];
     let batch = if parallel { 256 } else { 1 };
     let mut out = Vec::with_capacity(range.len());

@@ -7,8 +7,8 @@ use std::time::Instant;
 
 use plotters::prelude::*;
 
+use super::figures::plot_err;
 use crate::drivers::ensemble::{self as ens, EnsembleInput, EnsembleSummary, MemberRecord, ShardInfo};
-use crate::error::Error;
 
 /// What `cdem ensemble INPUT` was asked for.
 #[derive(Debug, Clone)]
@@ -47,7 +47,8 @@ pub fn run(req: &Request, progress: &mut dyn FnMut(usize, usize)) -> crate::Resu
     }
     let range = ens::shard_range(members, req.shard);
     let total = range.len();
-    let records = ens::run_members(&input, seed, range.clone(), &mut |done| progress(done, total))?;
+    let circle = ens::mean_critical_circle(&input)?;
+    let records = ens::run_members(&input, seed, range.clone(), circle, &mut |done| progress(done, total))?;
     let info = ShardInfo {
         input: req.input.display().to_string(),
         digest: ens::digest_hex(input.digest),
@@ -63,7 +64,6 @@ pub fn run(req: &Request, progress: &mut dyn FnMut(usize, usize)) -> crate::Resu
         crate::output::ensemble::write_shard(&req.out, &info, &records)?;
         return Ok(Outcome::Shard { info });
     }
-    let circle = ens::mean_critical_circle(&input)?;
     let summary = ens::aggregate(&info.input, seed, &input.analyses, Some(input.spec.lem_surface), circle, &records);
     finish(&req.out, &summary, &records, None)?;
     crate::output::write_json(&req.out.join("run.json"), &info)?;
@@ -105,10 +105,6 @@ fn finish(out: &Path, summary: &EnsembleSummary, records: &[MemberRecord], lines
         convergence(&out.join("convergence.png"), summary)?;
     }
     Ok(())
-}
-
-fn plot_err(path: &Path, e: impl std::fmt::Display) -> Error {
-    Error::io(path, std::io::Error::other(format!("drawing the figure: {e}")))
 }
 
 /// Histogram of the members' FS, FS = 1 and the mean marked.

@@ -482,12 +482,11 @@ impl SectionCut {
                 format!("the section has {} separate pieces: name the ground's surface group", self.outline.len()),
             ));
         };
-        let key = |p: &[f64; 2]| (p[0], p[1]);
         let pick = |better: &dyn Fn(&[f64; 2], &[f64; 2]) -> bool| {
             (0..ring.len()).fold(0, |b, i| if better(&ring[i], &ring[b]) { i } else { b })
         };
-        let left = pick(&|p, q| key(p).0 < key(q).0 || (p[0] == q[0] && p[1] > q[1]));
-        let right = pick(&|p, q| key(p).0 > key(q).0 || (p[0] == q[0] && p[1] > q[1]));
+        let left = pick(&|p, q| p[0] < q[0] || (p[0] == q[0] && p[1] > q[1]));
+        let right = pick(&|p, q| p[0] > q[0] || (p[0] == q[0] && p[1] > q[1]));
         // Counter-clockwise, the top runs from the right end to the left end.
         let mut top = Vec::new();
         let mut i = right;
