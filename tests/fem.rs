@@ -419,7 +419,7 @@ fn displacement_inside_a_cell_interpolates_the_column() {
 fn outputs_have_the_keys_of_cdem_run() {
     let sol = solve_scene(&column()).unwrap();
     let dir = std::env::temp_dir().join(format!("cdem-fem-test-{}", std::process::id()));
-    cdem::output::write_fem(&sol, &dir).unwrap();
+    cdem::output::write_fem(&sol, None, &dir).unwrap();
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
     let keys: Vec<&str> = summary.as_object().unwrap().keys().map(|k| k.as_str()).collect();

@@ -53,11 +53,19 @@ pub struct SafetyFactors {
 }
 
 pub fn safety_factors(points: &[SurfacePoint], cohesion: f64, tan_phi: f64) -> SafetyFactors {
+    safety_factors_with(points, |_| (cohesion, tan_phi))
+}
+
+/// Eq. 21 and 22 with the strength `(c, tan(phi))` of each point
+/// (`strength(i)` for point `i`), for a surface through several materials.
+pub fn safety_factors_with(points: &[SurfacePoint], strength: impl Fn(usize) -> (f64, f64)) -> SafetyFactors {
     let mut resisting = 0.0;
     let mut driving = 0.0;
     let k_i = points
         .iter()
-        .map(|p| {
+        .enumerate()
+        .map(|(i, p)| {
+            let (cohesion, tan_phi) = strength(i);
             let r = (p.sigma_n * tan_phi + cohesion) * p.area;
             let d = p.tau * p.area;
             resisting += r;

@@ -31,23 +31,36 @@ pub struct SlipCircle {
     pub zc: f64,
     /// The toe (exit) point (x, z).
     pub toe: [f64; 2],
+    /// Whether the mass turns clockwise (x right, z up) as it slides toward
+    /// the toe: a slope facing -x, its toe on the left.
+    pub clockwise: bool,
+}
+
+/// `a` wrapped into (-pi, pi].
+fn wrap(a: f64) -> f64 {
+    let w = a.rem_euclid(std::f64::consts::TAU);
+    if w > std::f64::consts::PI {
+        w - std::f64::consts::TAU
+    } else {
+        w
+    }
 }
 
 impl SlipCircle {
-    /// `(s, n, t)` at a point: arc length from the toe, unit normal out of the
-    /// mass, unit tangent toward the toe.
+    /// `(s, n, t)` at a point: arc length from the toe (negative beyond
+    /// it), unit normal out of the mass, unit tangent in the sliding
+    /// direction (toward the toe).
     pub fn frame(&self, x: [f64; 3]) -> (f64, [f64; 3], [f64; 3]) {
         let (dx, dz) = (x[0] - self.xc, x[2] - self.zc);
         let r = dx.hypot(dz);
         let n = [dx / r, 0.0, dz / r];
-        let mut t = [-n[2], 0.0, n[0]];
-        let to_toe = [self.toe[0] - x[0], 0.0, self.toe[1] - x[2]];
-        if t[0] * to_toe[0] + t[2] * to_toe[2] < 0.0 || (to_toe[0] == 0.0 && to_toe[2] == 0.0 && t[0] > 0.0) {
-            t = [-t[0], 0.0, -t[2]];
-        }
-        let a0 = (self.toe[1] - self.zc).atan2(self.toe[0] - self.xc);
-        let a = dz.atan2(dx);
-        (r * (a - a0).abs(), n, t)
+        let cw = self.clockwise;
+        // d(position)/d(angle) is (-n_z, n_x); clockwise motion is its opposite.
+        let t = if cw { [n[2], 0.0, -n[0]] } else { [-n[2], 0.0, n[0]] };
+        let a_t = (self.toe[1] - self.zc).atan2(self.toe[0] - self.xc);
+        // From the toe toward the crest the angle grows when sliding is clockwise.
+        let from_toe = wrap(dz.atan2(dx) - a_t);
+        (r * if cw { from_toe } else { -from_toe }, n, t)
     }
 }
 

@@ -323,7 +323,34 @@ fn run(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
             out.display()
         ),
     }
+    if let Some(report) = &result.surface {
+        print_surface(report);
+    }
     Ok(if s.end_state == cdem::EndState::Undecided { Outcome::OutOfSteps } else { Outcome::Reached })
+}
+
+/// One line per traction source of the scene's `[analysis]`.
+fn print_surface(r: &cdem::drivers::SurfaceReport) {
+    let segments = |f: &cdem::drivers::surface::Factors| {
+        f.segments
+            .iter()
+            .map(|g| format!("{} {:.1}-{:.1} m", if g.sign > 0 { "+" } else { "-" }, g.s0, g.s1))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let lem = r.lem_fs.map_or(String::new(), |f| format!(", LEM Bishop FS {f:.3}"));
+    println!(
+        "eq. 21 on the circle ({}{lem}; centre ({:.3}, {:.3}) m, r {:.3} m, toe ({:.2}, {:.2}) m, arc {:.2} m), {}:",
+        r.circle_from, r.arc.xc, r.arc.zc, r.arc.r, r.arc.toe[0], r.arc.toe[1], r.arc.length, r.state
+    );
+    println!(
+        "  K = {:.4} from element stresses; K_i sign segments from the toe: {}",
+        r.stresses.k,
+        segments(&r.stresses)
+    );
+    if let Some(sp) = &r.springs {
+        println!("  K = {:.4} from the interface's springs; K_i sign segments: {}", sp.k, segments(sp));
+    }
 }
 
 /// `cdem ensemble`: a shard or the whole ensemble, or `merge`.
@@ -424,8 +451,9 @@ fn srm(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
 /// `cdem fem`: the implicit FEM reference on the continuous mesh.
 fn fem(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
     let scene = Scene::load(scene_path)?;
-    let sol = cdem::drivers::solve_fem(&scene)?;
-    cdem::output::write_fem(&sol, out)?;
+    let fem = cdem::drivers::run_fem(&scene)?;
+    cdem::output::write_fem(&fem.solution, fem.surface.as_ref(), out)?;
+    let sol = &fem.solution;
     let s = &sol.summary;
     println!(
         "FEM solved {} unknowns ({:.2} s): residual {:.2e}, min u_z {:.4e} m, min sigma_zz {} Pa -> {}",
@@ -436,6 +464,9 @@ fn fem(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
         s.min_szz.map_or("-".into(), |v| format!("{v:.4e}")),
         out.display()
     );
+    if let Some(report) = &fem.surface {
+        print_surface(report);
+    }
     Ok(if s.converged { Outcome::Reached } else { Outcome::OutOfSteps })
 }
 

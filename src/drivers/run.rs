@@ -7,6 +7,7 @@ use std::ops::ControlFlow;
 use std::time::Instant;
 
 use super::failure::{self, FailureResult, Stage};
+use super::surface::{surface_analysis, SpringSource, SurfaceReport};
 use crate::error::{Error, ModelError};
 use crate::mesh::gmsh::read_msh;
 use crate::mesh::Mesh;
@@ -70,6 +71,8 @@ pub struct RunResult {
     pub failure: Option<FailureResult>,
     /// Element stresses of the final state, if the scene asks for them.
     pub stress: Option<Vec<[f64; 6]>>,
+    /// The scene's `[analysis]` on the elastic state (the end of phase 1).
+    pub surface: Option<SurfaceReport>,
     /// Phase-1 frames (`output.frame_every`); the final state is not among them.
     pub frames: Vec<Frame>,
     pub summary: Summary,
@@ -114,7 +117,8 @@ pub fn run_scene(scene: &Scene, progress: &mut dyn FnMut(usize, f64)) -> Result<
 /// Runs a scene under a [`Watch`].
 pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Error> {
     let t0 = Instant::now();
-    let model = build_model(scene)?;
+    let mesh = read_mesh(scene)?;
+    let model = model::build(&mesh, &scene.model_spec())?;
     check_supports(&model)?;
     let mut state = State::new(&model);
 
@@ -150,6 +154,15 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         unbalanced_ratio: elastic.unbalanced_ratio,
         failed_springs: failed_springs(&state.springs.status),
         max_displacement: FieldExtremes::of(&state.u, None).max_abs_u,
+    };
+
+    let surface = match &scene.analysis {
+        Some(_) => {
+            let springs = SpringSource { model: &model, u: &state.u, springs: &state.springs };
+            let stress = model.element_stresses(&state.u);
+            surface_analysis(scene, &mesh, &model.mesh_coords, &stress, Some(springs), "elastic (end of phase 1)")?
+        }
+        None => None,
     };
 
     // Phase 2, from the state phase 1 left (dynamic relaxation whatever
@@ -195,7 +208,7 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         phase1: Some(phase1),
         phase2,
     };
-    Ok(RunResult { model, state, elastic, failure, stress, frames, summary })
+    Ok(RunResult { model, state, elastic, failure, stress, surface, frames, summary })
 }
 
 /// Relaxes a model to equilibrium with the given settings and no watcher

@@ -567,9 +567,9 @@ pub fn sliding_block_acceleration(theta_deg: f64, phi_deg: f64) -> f64 {
 // The paper slope's slip circle.
 
 /// The Bishop critical circle of the paper slope (references/lem.md, "The
-/// paper's slope": centre (24.006, 63.222) m, through the toe (20, 20)), the
-/// interface "slip" of verification/cases/slope-slip/slope-slip.geo.
-pub const SLIP_CIRCLE: SlipCircle = SlipCircle { xc: 24.006, zc: 63.222, toe: [20.0, 20.0] };
+/// paper's slope": centre (24.006, 63.222) m, through the toe (20, 20); the
+/// slope faces -x, so the mass turns clockwise), the interface "slip" of verification/cases/slope-slip/slope-slip.geo.
+pub const SLIP_CIRCLE: SlipCircle = SlipCircle { xc: 24.006, zc: 63.222, toe: [20.0, 20.0], clockwise: true };
 
 /// The crest level of the paper slope (m): the section's ground is
 /// (0,20) (20,20) (56,40) (80,40) (references/lem.md).

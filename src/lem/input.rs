@@ -478,6 +478,14 @@ struct SceneLemMaterial {
     unit_weight: Option<f64>,
 }
 
+impl SceneLem {
+    /// The `(cohesion (Pa), friction angle (deg))` of a volume group's
+    /// `[[lem.material]]`, if it has one.
+    pub fn strength_of(&self, group: &str) -> Option<(f64, f64)> {
+        self.material.iter().find(|m| m.group == group).map(|m| (m.cohesion, m.friction_angle))
+    }
+}
+
 /// A LEM file's key as it is spelled inside a scene's `[lem]` table.
 fn in_scene(e: SceneError) -> SceneError {
     match e {

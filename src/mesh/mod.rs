@@ -7,6 +7,7 @@
 
 pub mod adjacency;
 pub mod gmsh;
+pub mod locate;
 pub mod perturb;
 pub mod shape;
 

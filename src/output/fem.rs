@@ -1,5 +1,6 @@
-//! Outputs of `cdem fem`, in the form `cdem run` writes them: `summary.json`
-//! and `final.vtu` + `run.pvd`. The VTK grid is the continuous mesh (cells as
+//! Outputs of `cdem fem`, in the form `cdem run` writes them: `summary.json`,
+//! `final.vtu` + `run.pvd`, and `analysis.json` + `analysis.csv` for a scene
+//! with `[analysis]`. The VTK grid is the continuous mesh (cells as
 //! in [`super::vtk`]: hexahedra and prisms as planar-faced polyhedra): points
 //! are the mesh nodes at their (perturbed) reference positions, with the point
 //! field `displacement` (m) and the cell fields `material` and `sxx syy szz
@@ -9,6 +10,7 @@ use std::path::Path;
 
 use super::vtk::{grid_vtu, write_pvd};
 use super::{staged, write_atomic, write_json};
+use crate::drivers::SurfaceReport;
 use crate::error::Error;
 use crate::fem::FemSolution;
 use crate::mesh::CellKind;
@@ -20,13 +22,18 @@ pub fn vtu_string(sol: &FemSolution) -> String {
     grid_vtu(&sol.coords, &cells, &sol.u, &sol.cell_material, Some(&sol.stress))
 }
 
-/// Writes `out/summary.json`, `out/final.vtu` and `out/run.pvd`, staged
-/// (moved into `out` together).
-pub fn write_fem(sol: &FemSolution, out: &Path) -> Result<(), Error> {
+/// Writes `out/summary.json`, `out/final.vtu` and `out/run.pvd`, and for a
+/// scene with `[analysis]` its files ([`super::surface`]), staged (moved into
+/// `out` together).
+pub fn write_fem(sol: &FemSolution, surface: Option<&SurfaceReport>, out: &Path) -> Result<(), Error> {
     staged(out, |dir| {
         write_json(&dir.join("summary.json"), &sol.summary)?;
         write_atomic(&dir.join("final.vtu"), vtu_string(sol).as_bytes())?;
         write_pvd(&dir.join("run.pvd"), &[(0.0, "final.vtu".to_string())])?;
-        Ok(vec!["summary.json".into(), "final.vtu".into(), "run.pvd".into()])
+        let mut files = vec!["summary.json".into(), "final.vtu".into(), "run.pvd".into()];
+        if let Some(report) = surface {
+            files.extend(super::surface::write_surface(report, dir)?);
+        }
+        Ok(files)
     })
 }

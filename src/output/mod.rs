@@ -10,6 +10,7 @@ pub mod ensemble;
 pub mod fem;
 pub mod run;
 pub mod srm;
+pub mod surface;
 pub mod vtk;
 
 use std::io::Write;

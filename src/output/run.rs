@@ -7,7 +7,9 @@
 //! - for a scene with `[failure]`: `stages.csv`, `failed_springs.csv`
 //!   (spring, first failure step, kind, position) and, with `output.vtk`, the
 //!   phase-2 frames `stage-NNNNNNNN.vtu` (where the failure state changed,
-//!   and the last) collected in `failure.pvd`.
+//!   and the last) collected in `failure.pvd`;
+//! - for a scene with `[analysis]`: `analysis.json` and `analysis.csv`
+//!   ([`super::surface`]), on the elastic state.
 
 use std::fmt::Write;
 use std::path::Path;
@@ -72,6 +74,9 @@ fn write_all(scene: &Scene, result: &RunResult, dir: &Path) -> Result<Vec<String
         vtk::write_pvd(&dir.join("run.pvd"), &pvd)?;
         files.extend(pvd.into_iter().map(|(_, n)| n));
         files.push("run.pvd".into());
+    }
+    if let Some(report) = &result.surface {
+        files.extend(super::surface::write_surface(report, dir)?);
     }
     if let Some(f) = &result.failure {
         files.extend(write_failure(result, f, dir, scene.output.vtk)?);

@@ -48,6 +48,9 @@
 //! key = "interface[0].strength.cohesion"
 //! std_dev = 2e3
 //!
+//! [analysis]                     # optional: eq. 21/22 on a slip circle (see AnalysisSpec)
+//! circle = { xc = 24.006, zc = 63.222, r = 43.41 }   # absent: the critical circle of [lem]
+//!
 //! [lem]                          # optional: `cdem lem` on this scene (see lem::SceneLem)
 //! ground_group = "ground"
 //! [[lem.material]]
@@ -56,6 +59,7 @@
 //! friction_angle = 18.0          # unit_weight defaults to density x |gravity|
 //! ```
 
+mod analysis;
 mod ensemble;
 mod validate;
 
@@ -68,6 +72,7 @@ pub use crate::model::spec::{
     Axis, Boundary, InterfaceSection, JointMode, Joints, MaterialSection, ModelSpec, Perturbation, StrengthSection,
 };
 use crate::solver::SolverParams;
+pub use analysis::{AnalysisSpec, CircleSpec, SurfaceStrength};
 pub use ensemble::{Analysis, Distribution, EnsembleSpec, LemSurface, RandomVariable};
 
 #[derive(Debug, Clone, Deserialize)]
@@ -95,6 +100,8 @@ pub struct Scene {
     pub lem: Option<crate::lem::SceneLem>,
     /// The Monte-Carlo ensemble of this scene (`cdem ensemble`), if present.
     pub ensemble: Option<EnsembleSpec>,
+    /// Eq. 21/22 on a slip circle (`cdem run`, `cdem fem`), if present.
+    pub analysis: Option<AnalysisSpec>,
     /// Directory of the scene file: relative paths are resolved against it.
     #[serde(skip)]
     pub base_dir: PathBuf,

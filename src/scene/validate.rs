@@ -104,6 +104,10 @@ pub(super) fn validate(s: &Scene) -> Result<(), SceneError> {
     if let Some(f) = &s.failure {
         f.validate()?;
     }
+    if let Some(a) = &s.analysis {
+        let interfaces: Vec<&str> = s.interface.iter().map(|i| i.group.as_str()).collect();
+        a.validate(&interfaces, s.lem.is_some())?;
+    }
     if s.output.history_every == 0 {
         return Err(SceneError::invalid("output.history_every", "must be at least 1"));
     }

@@ -1,0 +1,173 @@
+//! The scene's `[analysis]`: eq. 19-22 on its slip circle from a solved
+//! state. The circle is the scene's or the Bishop critical circle of its
+//! `[lem]`; the arc is found and sampled in the (perturbed) mesh by
+//! [`crate::analysis::surface`], the tractions come from the cells'
+//! stresses and, where the circle is an `[[interface]]`, from its springs.
+
+use serde::Serialize;
+
+use crate::analysis::safety::{safety_factors_with, sign_segments, Segment, SurfacePoint};
+use crate::analysis::slip::from_springs;
+use crate::analysis::surface::{from_cell_stresses, length_per_cell, Arc};
+use crate::error::{Error, SceneError};
+use crate::mesh::locate::CellLocator;
+use crate::mesh::Mesh;
+use crate::model::Model;
+use crate::physics::spring::SpringState;
+use crate::scene::Scene;
+
+/// Eq. 21/22 on the scene's surface: `analysis.json`, with the stations in
+/// `analysis.csv`.
+#[derive(Debug, Clone, Serialize)]
+pub struct SurfaceReport {
+    /// Where the circle comes from: `"scene"` or `"lem critical (Bishop)"`.
+    pub circle_from: String,
+    /// The Bishop FS of the LEM critical circle, when the circle is that one.
+    pub lem_fs: Option<f64>,
+    pub arc: Arc,
+    /// The state the tractions are taken from.
+    pub state: &'static str,
+    /// How the strength was chosen.
+    pub strength_from: String,
+    pub min_segment: f64,
+    /// From the cells' stresses at the stations.
+    pub stresses: Factors,
+    /// From the springs of `analysis.interface` (`cdem run` only).
+    pub springs: Option<Factors>,
+}
+
+/// K, its parts and the K_i of one traction source.
+#[derive(Debug, Clone, Serialize)]
+pub struct Factors {
+    /// Eq. 21: `K = sum R_i / sum D_i`.
+    pub k: f64,
+    /// `sum R_i`, `sum D_i` (N per metre of width for stations, N for springs).
+    pub resisting: f64,
+    pub driving: f64,
+    pub segments: Vec<Segment>,
+    #[serde(skip)]
+    pub points: Vec<SurfacePoint>,
+    /// `(cohesion (Pa), friction angle (deg))` at each point.
+    #[serde(skip)]
+    pub strength: Vec<(f64, f64)>,
+    #[serde(skip)]
+    pub k_i: Vec<f64>,
+}
+
+/// The springs of a CDEM state, for a surface that is an interface.
+pub struct SpringSource<'a> {
+    pub model: &'a Model,
+    pub u: &'a [f64],
+    pub springs: &'a SpringState,
+}
+
+/// The scene's `[analysis]` on cell stresses `stress` (mesh cell order) at
+/// the perturbed node positions `coords`, and on springs when given; None
+/// for a scene without `[analysis]`. `state` names the state for the report.
+pub fn surface_analysis(
+    scene: &Scene,
+    mesh: &Mesh,
+    coords: &[[f64; 3]],
+    stress: &[[f64; 6]],
+    springs: Option<SpringSource>,
+    state: &'static str,
+) -> Result<Option<SurfaceReport>, Error> {
+    let Some(spec) = &scene.analysis else { return Ok(None) };
+    let invalid = |key: &str, reason: String| Error::from(SceneError::invalid(key, reason));
+    let (circle, circle_from, lem_fs) = match spec.circle {
+        Some(c) => ((c.xc, c.zc, c.r), "scene".to_string(), None),
+        None => {
+            let result = crate::lem::analyse(&super::scene_lem_input(scene)?)?;
+            let c = result.critical.bishop.ok_or_else(|| {
+                invalid("analysis.circle", "missing, and the [lem] search found no Bishop critical circle".into())
+            })?;
+            ((c.xc, c.zc, c.r), "lem critical (Bishop)".to_string(), Some(c.fs))
+        }
+    };
+    let y = spec.y.unwrap_or_else(|| {
+        let (lo, hi) = coords.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |m, p| (m.0.min(p[1]), m.1.max(p[1])));
+        0.5 * (lo + hi)
+    });
+    let locator = CellLocator::new(coords, &mesh.cells);
+    let key = if spec.circle.is_some() { "analysis.circle" } else { "analysis" };
+    let arc = Arc::find(&locator, circle.0, circle.1, circle.2, y).map_err(|r| invalid(key, r))?;
+    let stations = arc.stations(&locator, spec.stations);
+    let min_segment = spec.min_segment.unwrap_or_else(|| length_per_cell(&arc, &stations));
+
+    // The strength: the table's, else the interface's, else each station's material in [lem].
+    let interface_strength = spec
+        .interface
+        .as_ref()
+        .and_then(|name| scene.interface.iter().find(|i| &i.group == name).and_then(|i| i.strength.as_ref()));
+    let (per_station, strength_from): (Vec<(f64, f64)>, String) = match (spec.strength, interface_strength) {
+        (Some(st), _) => (vec![(st.cohesion, st.friction_angle); stations.len()], "analysis.strength".into()),
+        (None, Some(st)) => (
+            vec![(st.cohesion, st.friction_angle); stations.len()],
+            format!("interface {:?}", spec.interface.as_deref().unwrap_or_default()),
+        ),
+        (None, None) => (material_strengths(scene, mesh, &stations)?, "[[lem.material]] of each station's cell".into()),
+    };
+    let points = from_cell_stresses(&arc, &stations, stress);
+    let stresses = factors(points, per_station, min_segment);
+
+    let springs = match (&spec.interface, springs) {
+        (Some(name), Some(src)) => {
+            let (c, phi) = match (spec.strength, interface_strength) {
+                (Some(st), _) => (st.cohesion, st.friction_angle),
+                (None, Some(st)) => (st.cohesion, st.friction_angle),
+                (None, None) => {
+                    return Err(invalid(
+                        "analysis.strength",
+                        format!("missing: interface {name:?} has no strength and the springs need one"),
+                    ))
+                }
+            };
+            let pts = from_springs(src.model, src.u, src.springs, name, &arc.slip_circle())
+                .ok_or_else(|| invalid("analysis.interface", format!("{name:?} has no springs in the model")))?;
+            let n = pts.len();
+            Some(factors(pts, vec![(c, phi); n], min_segment))
+        }
+        _ => None,
+    };
+    Ok(Some(SurfaceReport { circle_from, lem_fs, arc, state, strength_from, min_segment, stresses, springs }))
+}
+
+fn factors(points: Vec<SurfacePoint>, strength: Vec<(f64, f64)>, min_segment: f64) -> Factors {
+    let sf = safety_factors_with(&points, |i| (strength[i].0, strength[i].1.to_radians().tan()));
+    let s: Vec<f64> = points.iter().map(|p| p.s).collect();
+    let segments = sign_segments(&s, &sf.k_i, min_segment);
+    Factors { k: sf.k, resisting: sf.resisting, driving: sf.driving, segments, points, strength, k_i: sf.k_i }
+}
+
+/// Each station's strength from the `[[lem.material]]` of its cell's volume group.
+fn material_strengths(
+    scene: &Scene,
+    mesh: &Mesh,
+    stations: &[crate::analysis::surface::Station],
+) -> Result<Vec<(f64, f64)>, Error> {
+    let missing = || {
+        Error::from(SceneError::invalid(
+            "analysis.strength",
+            "missing: give it, an interface with a strength, or [[lem.material]] for the groups the circle crosses",
+        ))
+    };
+    let lem = scene.lem.as_ref().ok_or_else(missing)?;
+    let mut group_of = vec![None; mesh.cells.len()];
+    for g in mesh.groups.iter().filter(|g| g.dim == 3) {
+        for &c in &g.cells {
+            group_of[c] = Some(g.name.as_str());
+        }
+    }
+    stations
+        .iter()
+        .map(|st| {
+            let group = group_of[st.cell].unwrap_or("(none)");
+            lem.strength_of(group).ok_or_else(|| {
+                Error::from(SceneError::invalid(
+                    "analysis.strength",
+                    format!("missing: the circle crosses volume group {group:?}, which has no [[lem.material]]"),
+                ))
+            })
+        })
+        .collect()
+}
