@@ -5,7 +5,7 @@
 //! of any mesh (CDEM element stresses and FEM cell stresses alike).
 //!
 //! The arc is the run of the circle inside the model that contains its lowest
-//! point (or, if that point is outside, the longest run below the centre),
+//! point (or, if that point is outside, the longest run),
 //! its two ends found by bisection on the model's boundary. The toe is the
 //! lower end; the mass slides toward it. Each station represents the arc
 //! length `ds` between its neighbours' midpoints per metre of width
@@ -80,13 +80,12 @@ impl Arc {
             }
         }
         let contains_bottom = |&(s, n): &(usize, usize)| (0..n).any(|j| (s + j) % SAMPLES == 0);
-        let below = |&(s, n): &(usize, usize)| angle(s + n / 2).sin() < 0.0;
         let run = runs
             .iter()
             .find(|r| contains_bottom(r))
-            .or_else(|| runs.iter().filter(|r| below(r)).max_by_key(|r| r.1))
+            .or_else(|| runs.iter().max_by_key(|r| r.1))
             .copied()
-            .ok_or("the circle meets the model only above its centre: not a slip circle")?;
+            .expect("some sample is inside");
         if run.1 < 2 {
             return Err("the circle only grazes the model".into());
         }

@@ -334,7 +334,7 @@ fn print_surface(r: &cdem::drivers::SurfaceReport) {
     let segments = |f: &cdem::drivers::surface::Factors| {
         f.segments
             .iter()
-            .map(|g| format!("{} {:.1}-{:.1} m", if g.sign > 0 { "+" } else { "-" }, g.s0, g.s1))
+            .map(|g| format!("{} {:.1}-{:.1} m", if g.sign > 0 { "+" } else { "-" }, g.s0.max(0.0), g.s1))
             .collect::<Vec<_>>()
             .join(", ")
     };

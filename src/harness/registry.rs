@@ -53,6 +53,8 @@ pub const SKFEM_JSON: &str = "references/skfem.json";
 pub const SRM_MD: &str = "references/srm.md";
 /// Ensembles: the analytic case, member seeds, determinism, the SLURM run.
 pub const ENSEMBLE_MD: &str = "references/ensemble.md";
+/// Eq. 21/22 on any circle (`[analysis]`): the analytic column circle, the paper slope.
+pub const ANALYSIS_MD: &str = "references/analysis.md";
 /// The Wulong landslide: the paper's and ours.
 pub const WULONG_MD: &str = "references/wulong.md";
 /// The performance goals and measurements.
@@ -221,8 +223,17 @@ pub const BLOCK_SRM_COHESION: Case = Case {
     source: SRM_MD,
 };
 
+/// A circle in the laterally confined column: eq. 21 against the closed-form stresses.
+pub const COLUMN_CIRCLE: Case = Case {
+    name: "column, circle",
+    input: "verification/analysis/column-circle.toml",
+    checks: "`[analysis]` eq. 21 on a circle no face follows, CDEM and FEM stresses against the analytic K within 1 % \
+             (tests/surface_analysis.rs; `cdem reproduce` step 5)",
+    source: ANALYSIS_MD,
+};
+
 /// Every case above (the extreme suite is [`extreme_cases`]).
-pub const CASES: [Case; 12] = [
+pub const CASES: [Case; 13] = [
     COLUMN,
     COLUMN_MERGED,
     SLOPE,
@@ -235,6 +246,7 @@ pub const CASES: [Case; 12] = [
     SLIDING_BLOCK,
     BLOCK_SRM_FRICTION,
     BLOCK_SRM_COHESION,
+    COLUMN_CIRCLE,
 ];
 
 // ---------------------------------------------------------------------------
@@ -349,6 +361,17 @@ pub const TOL_EQ21_VS_LEM: f64 = 0.02;
 /// discretisations differ, 24-tetrahedron element against the trilinear
 /// hexahedron; measured 0.04 %).
 pub const TOL_EQ21_CDEM_VS_FEM: f64 = 0.005;
+/// Eq. 21 sampled from element stresses against the closed-form column
+/// field: 1 % (references/analysis.md: a station's stress is off by at most
+/// gamma h / 2, errors of both signs along the arc; measured 0.06 %).
+pub const TOL_EQ21_ANALYTIC: f64 = 0.01;
+/// Eq. 21 on the column circle from the closed-form stresses (references/analysis.md).
+pub const COLUMN_CIRCLE_K: Reference = Reference {
+    value: 9.52904,
+    source: ANALYSIS_MD,
+    what: "eq. 21 K on the circle (-1.5, 26) r 5 in the confined column, c 20 kPa, phi 30 deg: midpoint rule on the \
+           closed-form stresses",
+};
 /// Column with springs, stresses against the analytic column: the column is
 /// statically determinate, so its stresses do not depend on the joint
 /// compliance; they are limited by the convergence tolerance 1e-5
@@ -691,6 +714,11 @@ pub const ROWS: &[RowSpec] = &[
     // Strength reduction on the block on a plane (tests/srm.rs).
     spec("srm/block-friction", "SRM block on plane, theta 30, phi 35, c 0", "FS (strength reduction)", Asserted(TOL_SRM_BLOCK), SRM_MD, "tests/srm.rs"),
     spec("srm/block-cohesion", "SRM block on plane, theta 25, phi 20, c 5 kPa", "FS (strength reduction)", Asserted(TOL_SRM_BLOCK), SRM_MD, "tests/srm.rs"),
+    // Eq. 21 on any circle, `[analysis]` (tests/surface_analysis.rs).
+    spec("analysis/column/cdem-vs-analytic", "column, circle (-1.5, 26) r 5", "eq. 21 K from CDEM element stresses vs closed form", Asserted(TOL_EQ21_ANALYTIC), ANALYSIS_MD, "tests/surface_analysis.rs"),
+    spec("analysis/column/fem-vs-analytic", "column, circle (-1.5, 26) r 5", "eq. 21 K from FEM cell stresses vs closed form", Asserted(TOL_EQ21_ANALYTIC), ANALYSIS_MD, "tests/surface_analysis.rs"),
+    spec("analysis/slope/cdem-vs-fem", "paper slope, LEM critical circle, no conforming interface", "eq. 21 K from CDEM vs FEM stresses", Asserted(TOL_EQ21_CDEM_VS_FEM), ANALYSIS_MD, "tests/surface_analysis.rs"),
+    spec("analysis/slope/cdem-vs-lem", "paper slope, LEM critical circle, no conforming interface", "eq. 21 K from CDEM stresses vs LEM Bishop", Reported(Goal::Within(TOL_EQ21_VS_LEM)), ANALYSIS_MD, "tests/surface_analysis.rs"),
     // Ensembles against an exactly normal FS (tests/ensemble.rs).
     spec("ensemble/segment/mean", "ensemble: cohesive segment, c normal, 4000 members", "mean FS vs exact 1.2", Asserted(TOL_ENSEMBLE_MEAN), ENSEMBLE_MD, "tests/ensemble.rs"),
     spec("ensemble/segment/pf", "ensemble: cohesive segment, c normal, 4000 members", "P(FS < 1) vs exact Phi(-4/3)", Asserted(TOL_ENSEMBLE_PF), ENSEMBLE_MD, "tests/ensemble.rs"),
@@ -743,6 +771,7 @@ mod tests {
             ANSYS_MIN_SZZ,
             PAPER_LEM_FS,
             PAPER_EQ21_K,
+            COLUMN_CIRCLE_K,
             ACADS_REFEREE,
             ACADS_SLIDE_BISHOP,
             ACADS_SLIDE_SPENCER,

@@ -345,6 +345,19 @@ fn slip_circle(rep: &mut Report, fs_lem: f64, progress: &mut dyn FnMut(&str)) ->
         .unwrap_or_default();
     let k_cdem = safety_factors(&cdem_stress, c, tan_phi);
     rep.checks.extend(validation::slip_rows(k_sp.k, k_cdem.k, k_fem.k, fs_circle, &seg, rs.summary.wall_s));
+    // The same on circles no mesh face follows (`[analysis]`, references/analysis.md).
+    let (rows, runs) = validation::surface_rows()?;
+    rep.checks.extend(rows);
+    let _ = writeln!(
+        rep.md,
+        "## Eq. 21 on circles no face follows (`[analysis]`)\n\nColumn circle: K = {:.4} (CDEM), {:.4} (FEM), closed form {:.4}. Paper slope mesh, LEM critical circle: K = {:.4} (CDEM), {:.4} (FEM), LEM Bishop {:.4}.\n",
+        runs.column_cdem.stresses.k,
+        runs.column_fem.stresses.k,
+        reg::COLUMN_CIRCLE_K.value,
+        runs.slope_cdem.stresses.k,
+        runs.slope_fem.stresses.k,
+        runs.slope_cdem.lem_fs.unwrap_or(f64::NAN)
+    );
     let _ = writeln!(rep.md, "## Slip circle (Fig. 9)\n\nK_i sign segments (CDEM springs, toe to crest, runs under 2 m merged): {}. The paper: ab -, bc +, cd -, de +.\n", seg.iter().map(|g| format!("{} {:.0}-{:.0} m", if g.sign > 0 { "+" } else { "-" }, g.s0, g.s1)).collect::<Vec<_>>().join(", "));
     fig9(rep, &rs, (&pts_sp, &k_sp), (&pts_fem, &k_fem))
 }

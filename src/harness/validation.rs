@@ -248,3 +248,41 @@ pub fn perf_rows(h: &Headline) -> Vec<Check> {
     }
     rows
 }
+
+/// Eq. 21 from the scene's `[analysis]` on the column circle and on the
+/// paper slope's critical circle, CDEM (elastic) and FEM.
+#[derive(Debug, Clone)]
+pub struct SurfaceRuns {
+    pub column_cdem: crate::drivers::SurfaceReport,
+    pub column_fem: crate::drivers::SurfaceReport,
+    pub slope_cdem: crate::drivers::SurfaceReport,
+    pub slope_fem: crate::drivers::SurfaceReport,
+    pub seconds: f64,
+}
+
+/// Runs the two `[analysis]` cases (elastic CDEM and FEM of each) and makes
+/// their rows (references/analysis.md).
+pub fn surface_rows() -> Result<(Vec<Check>, SurfaceRuns), Error> {
+    let t0 = std::time::Instant::now();
+    let both = |case: &reg::Case| -> Result<_, Error> {
+        let scene = case.elastic_scene()?;
+        let cdem = crate::drivers::run_scene(&scene, &mut |_, _| {})?.surface;
+        let fem = crate::drivers::run_fem(&scene)?.surface;
+        let missing = || Error::from(crate::error::SceneError::invalid("analysis", format!("{}: none", case.input)));
+        Ok((cdem.ok_or_else(missing)?, fem.ok_or_else(missing)?))
+    };
+    let (column_cdem, column_fem) = both(&reg::COLUMN_CIRCLE)?;
+    let (slope_cdem, slope_fem) = both(&reg::SLOPE)?;
+    let t = t0.elapsed().as_secs_f64();
+    let k_ref = reg::COLUMN_CIRCLE_K.value;
+    let lem = slope_cdem.lem_fs.unwrap_or(f64::NAN);
+    let rows = vec![
+        row("analysis/column/cdem-vs-analytic").value(column_cdem.stresses.k, k_ref, t),
+        row("analysis/column/fem-vs-analytic").value(column_fem.stresses.k, k_ref, t),
+        row("analysis/slope/cdem-vs-fem").value(slope_cdem.stresses.k, slope_fem.stresses.k, t),
+        row("analysis/slope/cdem-vs-lem")
+            .value(slope_cdem.stresses.k, lem, t)
+            .with_note("see references/analysis.md: the mesh does not follow the circle"),
+    ];
+    Ok((rows, SurfaceRuns { column_cdem, column_fem, slope_cdem, slope_fem, seconds: t }))
+}
