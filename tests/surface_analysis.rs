@@ -1,5 +1,5 @@
 //! Eq. 21/22 on any circle of any mesh: a scene's `[analysis]` table
-//! (docs/method.md section 4.6, references/analysis.md).
+//! (docs/method.md section 4.3a, references/analysis.md).
 //!
 //! - A circle in the laterally confined column, which no mesh face follows:
 //!   K from the CDEM element stresses and from the FEM cell stresses against

@@ -1,7 +1,7 @@
 //! Scene table `[analysis]`: the stress-based safety factor (eq. 19-22) on a
 //! slip circle, written by `cdem run` (on the elastic state, the end of
 //! phase 1) and `cdem fem` as `analysis.json` and `analysis.csv`
-//! (docs/method.md section 4.6).
+//! (docs/method.md section 4.3a).
 //!
 //! ```toml
 //! [analysis]
