@@ -21,10 +21,15 @@ use cdem::harness::registry as reg;
 use cdem::scene::Scene;
 
 /// Eq. 21 on the column circle from the closed-form stresses
-/// (references/analysis.md), by the midpoint rule.
+/// (references/analysis.md), by the midpoint rule, with cohesion 20 kPa.
 fn column_circle_k(intervals: usize) -> f64 {
+    column_circle_k_with(intervals, 20e3)
+}
+
+/// The same with cohesion `c` (Pa).
+fn column_circle_k_with(intervals: usize, c: f64) -> f64 {
     let (gamma, k0) = (2100.0 * 9.81, 0.3 / 0.7);
-    let (c, tan_phi) = (20e3, 30f64.to_radians().tan());
+    let tan_phi = 30f64.to_radians().tan();
     let (xc, zc, r) = (-1.5f64, 26.0, 5.0);
     let a1 = (-xc / r).acos();
     let (mut resisting, mut driving) = (0.0, 0.0);
@@ -116,6 +121,32 @@ fn cdem_run_and_cdem_fem_write_the_analysis_files() {
         assert_eq!(lines.next().unwrap(), "source,s,x,z,area,sigma_n,tau,cohesion,friction_angle,k_i");
         assert_eq!(lines.count(), 400);
     }
+}
+
+/// `cdem ensemble`: each member's eq. 21 K on the scene's circle; with the
+/// cohesion drawn and the stresses fixed, each is the closed form with the
+/// member's own cohesion.
+#[test]
+fn each_ensemble_member_gets_eq21_on_the_scene_circle() {
+    use cdem::drivers::ensemble::{aggregate, run_members, EnsembleInput};
+    let input = EnsembleInput::load(Path::new("verification/ensemble/column-circle-cohesion.toml")).unwrap();
+    let n = input.default_members();
+    let records = run_members(&input, input.default_seed(), 0..n, None, &mut |_| {}).unwrap();
+    let mut ks = Vec::new();
+    for r in &records {
+        let c = r.draws[0].value;
+        let k = r.cdem.as_ref().unwrap().eq21_k.unwrap();
+        let exact = column_circle_k_with(200_000, c);
+        println!("member {}: c {c:.0} Pa, K {k:.5}, closed form {exact:.5}", r.member);
+        assert!((k / exact - 1.0).abs() < reg::TOL_EQ21_ANALYTIC, "member {}: {k} vs {exact}", r.member);
+        ks.push(k);
+    }
+    // The cohesions differ, and so do the K.
+    assert!(ks.iter().any(|&k| (k - ks[0]).abs() > 0.05), "{ks:?}");
+    let s = aggregate("column-circle-cohesion", input.default_seed(), &input.analyses, None, None, &records);
+    let mean = ks.iter().sum::<f64>() / ks.len() as f64;
+    assert!((s.eq21_k.unwrap().mean - mean).abs() < 1e-12 * mean);
+    assert_eq!(s.eq21_reliability.unwrap().probability_of_failure, 0.0);
 }
 
 fn error_key(edit: &str) -> String {

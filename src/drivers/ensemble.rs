@@ -89,6 +89,11 @@ pub struct CdemMember {
     /// springs that failed then (m).
     pub first_failure_step: Option<usize>,
     pub first_failure_at: Option<[f64; 3]>,
+    /// Eq. 21 K on the scene's `[analysis]` circle at the elastic state: from
+    /// the interface's springs when it names one, else from the element
+    /// stresses. None without `[analysis]`.
+    #[serde(default)]
+    pub eq21_k: Option<f64>,
 }
 
 /// One member's record: one JSON line of `members.jsonl`.
@@ -395,7 +400,13 @@ pub fn run_member(
         None
     };
     if let (true, Some(scene)) = (input.analyses.contains(&Analysis::Cdem), &scene) {
-        let run = super::run_scene(scene, &mut |_, _| {})?;
+        // Eq. 21 on the mean critical circle, as the LEM (`lem_surface = "critical"`),
+        // unless the scene names its own circle.
+        let mut scene = scene.clone();
+        if let (Some(a), Some(c)) = (scene.analysis.as_mut(), circle) {
+            a.circle.get_or_insert(crate::scene::CircleSpec { xc: c.xc, zc: c.zc, r: c.r });
+        }
+        let run = super::run_scene(&scene, &mut |_, _| {}).map_err(member_error)?;
         let s = &run.summary;
         let phase1 = s.phase1.as_ref();
         let mut m = CdemMember {
@@ -407,6 +418,7 @@ pub fn run_member(
             failed_shear: s.failed_springs.shear,
             first_failure_step: None,
             first_failure_at: None,
+            eq21_k: run.surface.as_ref().map(|r| r.springs.as_ref().unwrap_or(&r.stresses).k),
         };
         if let Some(f) = &run.failure {
             if let Some(first) = f.failed_at.iter().flatten().min().copied() {
@@ -480,6 +492,11 @@ pub struct EnsembleSummary {
     /// Statistics of each random variable's draws.
     pub draws: Vec<(String, Stats)>,
     pub elastic_max_abs_u: Option<Stats>,
+    /// Eq. 21 K of the members with `[analysis]` (`CdemMember::eq21_k`).
+    pub eq21_k: Option<Stats>,
+    /// `P(K < 1)` and the reliability indices of eq. 21 K: a stress-based
+    /// probability beside the FS's.
+    pub eq21_reliability: Option<Reliability>,
     /// Members per phase-2 end state.
     pub end_states: Vec<(EndState, usize)>,
 }
@@ -504,6 +521,7 @@ pub fn aggregate(
         })
         .collect();
     let u: Vec<f64> = records.iter().filter_map(|r| r.cdem.as_ref().map(|c| c.elastic_max_abs_u)).collect();
+    let k: Vec<f64> = records.iter().filter_map(|r| r.cdem.as_ref().and_then(|c| c.eq21_k)).collect();
     let mut end_states = Vec::new();
     for e in [EndState::Equilibrium, EndState::GlobalSliding, EndState::Undecided] {
         let n = records.iter().filter(|r| r.cdem.as_ref().and_then(|c| c.end_state) == Some(e)).count();
@@ -530,6 +548,8 @@ pub fn aggregate(
         convergence: if fs.is_empty() { Vec::new() } else { stats::convergence(&fs) },
         draws,
         elastic_max_abs_u: stats::distribution(&u),
+        eq21_k: stats::distribution(&k),
+        eq21_reliability: stats::reliability(&k),
         end_states,
     }
 }

@@ -93,6 +93,22 @@ pub fn markdown(s: &EnsembleSummary) -> String {
             1e3 * u.max
         );
     }
+    if let (Some(k), Some(r)) = (&s.eq21_k, &s.eq21_reliability) {
+        let _ = writeln!(
+            m,
+            "\nEq. 21 K on the `[analysis]` circle (elastic state): mean {} (95 % CI {} to {}), standard deviation {}, \
+             from {} to {}; P(K < 1) {} (95 % CI {} to {}).",
+            g(k.mean),
+            g(k.mean_ci95[0]),
+            g(k.mean_ci95[1]),
+            g(k.std_dev),
+            g(k.min),
+            g(k.max),
+            g(r.probability_of_failure),
+            g(r.pf_ci95[0]),
+            g(r.pf_ci95[1])
+        );
+    }
     for (e, n) in &s.end_states {
         let _ = writeln!(m, "- phase 2 ended {e:?}: {n} members");
     }

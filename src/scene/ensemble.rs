@@ -6,7 +6,8 @@
 //! members = 200                  # default of --members
 //! seed = 1                       # default of --seed (BASE)
 //! analyses = ["cdem", "lem"]     # default: "cdem" for a scene (+ "lem" with [lem]), "lem" for a LEM file;
-//!                                # "srm": strength reduction per member (its FS is the headline FS)
+//!                                # "srm": strength reduction per member (its FS is the headline FS);
+//!                                # "cdem" with [analysis]: eq. 21 K per member on its circle
 //! lem_surface = "critical"       # "critical": every member on the mean critical circle; "search": its own
 //!
 //! [[ensemble.random]]            # a strength drawn per member, as Slide's probabilistic analysis
