@@ -67,8 +67,9 @@ enum Command {
         #[arg(long, default_value = "study")]
         out: PathBuf,
     },
-    /// Performance: step bandwidth against stream, DR against FEM, LEM against pySlope, the
-    /// damping table and cost against size (gmsh for refine 7, 10): DIR/perf.md and CSVs.
+    /// Performance: step bandwidth against stream, DR against FEM, LEM against pySlope, phase 2
+    /// and `cdem srm` on the slip-surface slope, the damping table and cost against size (gmsh
+    /// for refine 7, 10): DIR/perf.md (with the validation rows perf/*) and CSVs.
     /// Run from the repository root; about 20 minutes with the defaults.
     Perf {
         #[arg(long, default_value = "perf")]
@@ -83,6 +84,10 @@ enum Command {
         /// Skip the damping table (about 3 minutes).
         #[arg(long)]
         no_damping: bool,
+        /// Skip `cdem srm` on the slip-surface slope, brittle and ductile (about 15 s and 90 s);
+        /// phase 2 to a decision (node-block against lumped masses, a few seconds) always runs.
+        #[arg(long)]
+        no_srm: bool,
         /// A Python interpreter with pySlope installed (scripts/requirements-lem.txt): time pySlope
         /// in the same run. Without it the LEM ratio uses pySlope's recorded time (references/pyslope.json).
         #[arg(long, value_name = "PYTHON")]
@@ -257,9 +262,14 @@ fn main() -> ExitCode {
             st.finish();
             reached(r.map(|rows| eprintln!("study: {} points -> {}", rows.len(), out.join("study.csv").display())))
         }
-        Command::Perf { out, refine, dr_up_to, no_damping, pyslope } => {
-            let mut opts =
-                cdem::harness::perf::PerfOptions { damping: !no_damping, refine, pyslope, ..Default::default() };
+        Command::Perf { out, refine, dr_up_to, no_damping, no_srm, pyslope } => {
+            let mut opts = cdem::harness::perf::PerfOptions {
+                damping: !no_damping,
+                srm: !no_srm,
+                refine,
+                pyslope,
+                ..Default::default()
+            };
             opts.dr_up_to = dr_up_to.unwrap_or(opts.dr_up_to);
             let mut st = Stages::new("perf");
             let r = cdem::harness::perf::run_perf(Path::new("."), &out, &opts, &mut |what| st.stage(what));

@@ -398,6 +398,21 @@ pub const TOL_BLOCK_AT_REST: f64 = 1e-5;
 pub const GOAL_VS_PAPER: f64 = 0.01;
 
 // ---------------------------------------------------------------------------
+// Phase 2 and strength reduction on the slip-surface slope, timed
+// (references/performance.md, "Phase 2 and strength reduction in `cdem perf`").
+
+/// Phase-2 steps to a decision on [`SLOPE_SLIP`] with lumped masses before
+/// node-block masses and the displacement-rate rule (the 0.5 m bound
+/// decided): the paper-era baseline, 58,580 steps.
+pub const PHASE2_STEPS_BASELINE: f64 = 58_580.0;
+/// The goal for the phase-2 steps to a decision on [`SLOPE_SLIP`]: at most 5,000.
+pub const GOAL_PHASE2_STEPS: f64 = 5_000.0;
+/// The goal for `cdem srm` on the slip-surface slope: at most 60 s on 2 cores.
+pub const GOAL_SRM_SECONDS: f64 = 60.0;
+/// 3DEC's default step cap of one strength-reduction trial: 50,000 steps.
+pub const THREEDEC_TRIAL_STEP_CAP: f64 = 50_000.0;
+
+// ---------------------------------------------------------------------------
 // The laterally confined column (references/column.md).
 
 /// A laterally confined elastic column under gravity: base fixed, sides on
@@ -656,6 +671,9 @@ const COLUMN_SPRINGS_CASE: &str = "column, springs E_j/L=1e11";
 const ACADS_CASE: &str = "ACADS 1(a)";
 const SLOPE_VS_FEM: &str = "paper slope, CDEM vs FEM";
 const SLIP_CASE: &str = "paper slope, slip circle";
+const PHASE2_CASE: &str = "performance: slip-surface slope, phase 2";
+const SRM_BRITTLE_CASE: &str = "performance: cdem srm, slip-surface slope, brittle";
+const SRM_DUCTILE_CASE: &str = "performance: cdem srm, slip-surface slope, ductile";
 
 /// Every row of the validation table but the extreme suite's (see [`rows`]).
 #[rustfmt::skip]
@@ -730,6 +748,17 @@ pub const ROWS: &[RowSpec] = &[
     spec("perf/pcg-over-fem", "performance: paper slope", "PCG to 1e-5 / FEM solve time (goal <= 3)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/lem/paper_slope", "performance: LEM grid, paper_slope", "pySlope / ours time (goal >= 100)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/lem/acads_1a", "performance: LEM grid, acads_1a", "pySlope / ours time (goal >= 100)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),
+    // Phase 2 and strength reduction on the slip-surface slope (tests/performance.rs; the SRM rows
+    // are measured by `cdem perf` only, skipped in the tests and in `cdem reproduce`).
+    spec("perf/phase2/block-steps", PHASE2_CASE, "phase-2 steps to a decision, node-block masses (goal <= 5,000)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
+    spec("perf/phase2/lumped-steps", PHASE2_CASE, "phase-2 steps to a decision, lumped masses, same run (paper-era baseline 58,580)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
+    spec("perf/phase2/lumped-over-block", PHASE2_CASE, "phase-2 steps, lumped / node-block masses, same run (goal >= 1)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),
+    spec("perf/srm/brittle/wall", SRM_BRITTLE_CASE, "cdem srm wall time (s) (goal <= 60)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
+    spec("perf/srm/brittle/trial-steps-mean", SRM_BRITTLE_CASE, "mean steps per trial (3DEC's default cap 50,000)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
+    spec("perf/srm/brittle/trial-steps-max", SRM_BRITTLE_CASE, "largest steps of a trial (3DEC's default cap 50,000)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
+    spec("perf/srm/ductile/wall", SRM_DUCTILE_CASE, "cdem srm wall time (s) (goal <= 60)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
+    spec("perf/srm/ductile/trial-steps-mean", SRM_DUCTILE_CASE, "mean steps per trial (3DEC's default cap 50,000)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
+    spec("perf/srm/ductile/trial-steps-max", SRM_DUCTILE_CASE, "largest steps of a trial (3DEC's default cap 50,000)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
 ];
 
 /// Every row of the validation table, in its order: [`ROWS`] with the

@@ -15,6 +15,7 @@ use crate::analysis::Segment;
 use crate::drivers::RunResult;
 use crate::error::Error;
 use crate::fem::FemSolution;
+use crate::harness::perf::failure::{Phase2Figure, Phase2Run, SrmFigure};
 use crate::harness::perf::headline::Headline;
 use crate::harness::registry::{self as reg, row, ExtremeCase};
 use crate::harness::report::Check;
@@ -244,7 +245,11 @@ pub fn perf_rows(h: &Headline) -> Vec<Check> {
                 *ours,
             ),
         };
-        rows.push(c.with_note("pySlope's time recorded in references/pyslope.json, not timed in this run"));
+        rows.push(c.with_note(if h.pyslope_timed_now {
+            "pySlope timed in this run"
+        } else {
+            "pySlope's time recorded in references/pyslope.json, not timed in this run"
+        }));
     }
     rows
 }
@@ -285,4 +290,75 @@ pub fn surface_rows() -> Result<(Vec<Check>, SurfaceRuns), Error> {
             .with_note("see references/analysis.md: the mesh does not follow the circle"),
     ];
     Ok((rows, SurfaceRuns { column_cdem, column_fem, slope_cdem, slope_fem, seconds: t }))
+}
+
+/// Phase 2 of the slip-surface slope, node-block against lumped masses in
+/// one run ([`crate::harness::perf::failure::phase2_figure`]): the steps to a
+/// decision against the goal and the paper-era baseline, and their ratio. A
+/// phase 2 that ran to its step cap has no decision: its rows carry a defect.
+pub fn phase2_rows(f: &Phase2Figure) -> Vec<Check> {
+    let (b, l) = (&f.block, &f.lumped);
+    let checked = |c: Check, runs: &[&Phase2Run]| match runs.iter().find(|r| !r.decided()) {
+        Some(r) => c.with_defect(format!(
+            "phase 2 with {} masses ran to its step cap ({} steps) without a decision",
+            if r.block_mass { "node-block" } else { "lumped" },
+            r.steps
+        )),
+        None => c,
+    };
+    vec![
+        checked(row("perf/phase2/block-steps").value(b.steps as f64, reg::GOAL_PHASE2_STEPS, b.seconds), &[b])
+            .with_note(format!("{:?}; lumped masses {} steps in this run", b.end, l.steps)),
+        checked(row("perf/phase2/lumped-steps").value(l.steps as f64, reg::PHASE2_STEPS_BASELINE, l.seconds), &[l])
+            .with_note(format!("{:?}; the baseline was decided by the 0.5 m bound, before the rate rule", l.end)),
+        checked(row("perf/phase2/lumped-over-block").value(f.lumped_over_block(), 1.0, b.seconds + l.seconds), &[b, l])
+            .with_note(format!("{} / {} steps", l.steps, b.steps)),
+    ]
+}
+
+/// The ids of the rows of one timed strength reduction (`variant` of
+/// [`crate::harness::perf::failure::SRM_VARIANTS`]): wall time, mean and
+/// largest steps per trial.
+pub fn srm_perf_ids(variant: &str) -> [String; 3] {
+    ["wall", "trial-steps-mean", "trial-steps-max"].map(|q| format!("perf/srm/{variant}/{q}"))
+}
+
+/// `cdem srm` on the slip-surface slope ([`crate::harness::perf::failure::srm_figure`]):
+/// its wall time against the goal, the mean and largest steps per trial
+/// against 3DEC's default cap. A search without a bracket carries a defect.
+pub fn srm_perf_rows(f: &SrmFigure) -> Vec<Check> {
+    let [wall, mean, max] = srm_perf_ids(&f.variant);
+    let cap = reg::THREEDEC_TRIAL_STEP_CAP;
+    let budget =
+        format!("{} trials, {} ran to their budget of {} steps (10 N_r)", f.trials, f.undecided, f.trial_budget);
+    let rows = vec![
+        row(&wall).value(f.seconds, reg::GOAL_SRM_SECONDS, f.seconds).with_note(format!(
+            "FS {}; {budget}",
+            f.fs.map_or("none (no bracket)".to_string(), |fs| format!("{fs:.3}"))
+        )),
+        row(&mean)
+            .value(f.mean_trial_steps, cap, f.seconds)
+            .with_note(format!("{:.2} of the cap; {budget}", f.mean_trial_steps / cap)),
+        row(&max).value(f.max_trial_steps as f64, cap, f.seconds).with_note(format!(
+            "{:.2} of the cap; our budget {} steps is {} it",
+            f.max_trial_steps as f64 / cap,
+            f.trial_budget,
+            if (f.trial_budget as f64) < cap { "below" } else { "not below" }
+        )),
+    ];
+    match f.fs {
+        Some(_) => rows,
+        None => rows.into_iter().map(|c| c.with_defect("the search found no bracket")).collect(),
+    }
+}
+
+/// The rows of the timed strength reductions as skipped, with the reason
+/// (they take 10-90 s each: `cdem perf` measures them, the tests and
+/// `cdem reproduce` do not).
+pub fn srm_perf_skipped(reason: &str) -> Vec<Check> {
+    crate::harness::perf::failure::SRM_VARIANTS
+        .iter()
+        .flat_map(|(variant, _)| srm_perf_ids(variant))
+        .map(|id| row(&id).skipped(reason))
+        .collect()
 }

@@ -166,7 +166,8 @@ pub struct FailureParams {
     /// Node-block masses in phase 2 (default true; only with mass scaling and
     /// viscous or kinetic damping, lumped masses otherwise). On the paper's
     /// slip-surface case they decide in 2,160 steps where lumped masses take
-    /// 57,820 (references/performance.md).
+    /// 4,752 (58,580 before the displacement-rate rule; references/performance.md,
+    /// rows `perf/phase2/*`).
     pub block_mass: bool,
 }
 

@@ -2,7 +2,8 @@
 //! run puts every ratio side by side: the criterion benches measure the same
 //! things more carefully; this module gives them to the validation report
 //! (`tests/performance.rs`) and to `cdem perf` ([`run_perf`]), which adds the
-//! damping table and the growth with size (references/performance.md).
+//! strength reductions of the slip-surface slope, the damping table and the
+//! growth with size (references/performance.md).
 //!
 //! One file per concern:
 //! - [`stream`]: the machine's memory bandwidth (STREAM triad);
@@ -15,6 +16,8 @@
 //! - [`pyslope`]: the LEM grid search against pySlope, timed in the same run
 //!   or from its recorded time;
 //! - [`headline`](mod@headline): the four figures on the paper slope;
+//! - [`failure`]: phase 2 to a decision (node-block against lumped masses)
+//!   and `cdem srm` on the slip-surface slope;
 //! - [`damping`]: damping kind x mass scaling x block masses on one scene;
 //! - [`scaling`]: cost against size, fitted exponents;
 //! - [`tables`]: the Markdown tables, the CSV files and the figure.
@@ -30,6 +33,7 @@ use crate::error::Error;
 
 pub mod bytes;
 pub mod damping;
+pub mod failure;
 pub mod headline;
 pub mod memory;
 pub mod pyslope;
@@ -40,6 +44,10 @@ pub mod timing;
 
 pub use bytes::step_bytes;
 pub use damping::{damping_table, DampingRow};
+pub use failure::{
+    failure_figures, phase2_figure, srm_figure, srm_scene, FailureFigures, Phase2Figure, Phase2Run, SrmFigure,
+    SRM_VARIANTS,
+};
 pub use headline::{headline, headline_with, paper_slope, Headline};
 pub use pyslope::{pyslope_grid_search, pyslope_seconds, time_lem_grid, time_pyslope_grid, LEM_CASES};
 pub use scaling::{
@@ -54,6 +62,10 @@ pub use timing::{time_dr, time_fem, time_pcg, time_steps, DrFigure, PcgFigure, S
 pub struct PerfOptions {
     /// Run the damping table (about 3 minutes: local damping is slow).
     pub damping: bool,
+    /// Run `cdem srm` on the slip-surface slope, brittle and ductile
+    /// ([`failure::SRM_VARIANTS`]; about 15 s and 90 s). Phase 2 to a
+    /// decision (a few seconds) always runs.
+    pub srm: bool,
     /// Resolutions of the scaling study (`refine` of slope.geo); those
     /// without a committed mesh need gmsh on PATH.
     pub refine: Vec<f64>,
@@ -72,6 +84,7 @@ impl Default for PerfOptions {
     fn default() -> Self {
         Self {
             damping: true,
+            srm: true,
             refine: vec![0.5, 1.0, 2.0, 4.0, 7.0, 10.0],
             lumped_up_to: 4000,
             dr_up_to: usize::MAX,
@@ -84,16 +97,19 @@ impl Default for PerfOptions {
 /// scaling takes about 274,000 on the paper slope).
 const DAMPING_MAX_STEPS: usize = 400_000;
 
-/// `cdem perf`: headline figures, damping table and scaling study; writes
-/// `perf.md`, `damping.csv`, `scaling.csv` and `scaling.png` to `out`
-/// (gmsh meshes in `out/meshes`) and returns `perf.md`.
+/// `cdem perf`: headline figures, phase 2 and strength reduction on the
+/// slip-surface slope, damping table and scaling study; writes `perf.md`
+/// (with the validation rows `perf/*` of the run), `phase2.csv`, `srm.csv`,
+/// `damping.csv`, `scaling.csv` and `scaling.png` to `out` (gmsh meshes in
+/// `out/meshes`) and returns `perf.md`.
 pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn FnMut(&str)) -> Result<String, Error> {
     std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
     let (scene, model) = paper_slope(root)?;
     let head = headline_with(root, &scene, &model, opts.pyslope.as_deref(), progress)?;
+    let failure = failure_figures(root, opts.srm, progress)?;
     let damping =
         if opts.damping { damping_table(&model, &scene.solver, DAMPING_MAX_STEPS, progress) } else { Vec::new() };
     let meshes = scaling_meshes(root, &opts.refine, &out.join("meshes"), progress)?;
     let scaling = scaling_study(&scene, &meshes, opts.lumped_up_to, opts.dr_up_to, progress)?;
-    write_report(out, &head, &damping, &scaling)
+    write_report(out, &head, &failure, &damping, &scaling)
 }

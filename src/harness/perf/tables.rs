@@ -1,7 +1,9 @@
-//! What `cdem perf` writes: the Markdown tables of the headline figures, the
-//! damping table and the scaling study (with its fitted exponents), the
-//! rows as CSV, the cost-against-size figure, and `perf.md` made of the
-//! three tables. Formatting only: the numbers come from the other modules.
+//! What `cdem perf` writes: the Markdown tables of the headline figures, of
+//! phase 2 and the strength reductions on the slip-surface slope, of the
+//! validation rows `perf/*` these figures make, the damping table and the
+//! scaling study (with its fitted exponents), the rows as CSV, the
+//! cost-against-size figure, and `perf.md` made of the tables. Formatting
+//! only: the numbers come from the other modules.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -9,9 +11,13 @@ use std::path::Path;
 use serde::Serialize;
 
 use super::damping::DampingRow;
+use super::failure::FailureFigures;
 use super::headline::Headline;
 use super::scaling::{exponents, ScalingRow};
 use crate::error::Error;
+use crate::harness::registry as reg;
+use crate::harness::report::{Check, Table};
+use crate::harness::validation;
 
 impl Headline {
     /// The figures as a Markdown table, each with its goal.
@@ -64,6 +70,91 @@ impl Headline {
         }
         md
     }
+}
+
+impl FailureFigures {
+    /// The figures as a Markdown table, each with its goal or reference.
+    pub fn markdown(&self) -> String {
+        let mut md = String::new();
+        let _ = writeln!(md, "| figure | measured | goal / reference |\n|---|---|---|");
+        let (b, l) = (&self.phase2.block, &self.phase2.lumped);
+        let _ = writeln!(
+            md,
+            "| phase 2 to a decision, node-block masses (default) | {} steps ({:?}, {:.1e} m, {} springs failed), \
+             {:.2} s = {:.2} of the goal | <= {} steps |",
+            b.steps,
+            b.end,
+            b.max_displacement,
+            b.failed_springs,
+            b.seconds,
+            b.steps as f64 / reg::GOAL_PHASE2_STEPS,
+            reg::GOAL_PHASE2_STEPS
+        );
+        let _ = writeln!(
+            md,
+            "| phase 2 to a decision, lumped masses (same elastic state) | {} steps ({:?}, {:.1e} m, {} springs \
+             failed), {:.2} s; lumped / block = {:.2}x | paper-era baseline {} steps |",
+            l.steps,
+            l.end,
+            l.max_displacement,
+            l.failed_springs,
+            l.seconds,
+            self.phase2.lumped_over_block(),
+            reg::PHASE2_STEPS_BASELINE
+        );
+        let cap = reg::THREEDEC_TRIAL_STEP_CAP;
+        for f in &self.srm {
+            let fs = f.fs.map_or("no bracket".to_string(), |fs| format!("FS {fs:.3}"));
+            let _ = writeln!(
+                md,
+                "| cdem srm, slip-surface slope, {} | {:.1} s, {fs}, {} trials; steps per trial mean {:.0} / max {} \
+                 = {:.3} / {:.3} of 3DEC's cap; {} trials ran to the budget of {} steps | <= {} s; cap {} steps |",
+                f.variant,
+                f.seconds,
+                f.trials,
+                f.mean_trial_steps,
+                f.max_trial_steps,
+                f.mean_trial_steps / cap,
+                f.max_trial_steps as f64 / cap,
+                f.undecided,
+                f.trial_budget,
+                reg::GOAL_SRM_SECONDS,
+                cap
+            );
+        }
+        if self.srm.is_empty() {
+            let _ = writeln!(
+                md,
+                "| cdem srm, slip-surface slope | not run (`--no-srm`) | <= {} s |",
+                reg::GOAL_SRM_SECONDS
+            );
+        }
+        md
+    }
+}
+
+/// The validation rows `perf/*` of a `cdem perf` run: the headline's, phase
+/// 2's and the strength reductions' (skipped if not run).
+pub fn perf_checks(head: &Headline, failure: &FailureFigures) -> Vec<Check> {
+    let mut rows = validation::perf_rows(head);
+    rows.extend(validation::phase2_rows(&failure.phase2));
+    if failure.srm.is_empty() {
+        rows.extend(validation::srm_perf_skipped("not run: cdem perf --no-srm"));
+    }
+    for f in &failure.srm {
+        rows.extend(validation::srm_perf_rows(f));
+    }
+    rows
+}
+
+/// The rows of [`perf_checks`] as the validation table shows them (the
+/// registry's rows `perf/*`, each with its result).
+pub fn perf_rows_markdown(head: &Headline, failure: &FailureFigures) -> String {
+    let specs: Vec<_> = reg::rows().into_iter().filter(|r| r.id.starts_with("perf/")).collect();
+    let table = Table::assemble(&specs, perf_checks(head, failure), &[], &|spec| {
+        format!("not measured by cdem perf; see {}", spec.test)
+    });
+    format!("{}.\n\n{}", table.counts(), table.markdown())
 }
 
 /// The damping rows as a Markdown table.
@@ -143,13 +234,23 @@ pub fn scaling_markdown(scaling: &[ScalingRow]) -> String {
     md
 }
 
-/// `perf.md`: the headline, damping and scaling tables under their headings.
-pub fn perf_markdown(head: &Headline, damping: &[DampingRow], scaling: &[ScalingRow]) -> String {
+/// `perf.md`: the headline, phase-2 and strength-reduction, validation-row,
+/// damping and scaling tables under their headings.
+pub fn perf_markdown(
+    head: &Headline,
+    failure: &FailureFigures,
+    damping: &[DampingRow],
+    scaling: &[ScalingRow],
+) -> String {
     format!(
         "# Performance (cdem perf)\n\n## Headline (paper slope, {} threads)\n\n{}\n\
+         ## Phase 2 and strength reduction (slip-surface slope)\n\n{}\n\
+         ## Validation rows of this run\n\n{}\n\
          ## Damping (paper slope, to 1e-5)\n\n{}\n## Growth with size\n\n{}",
         rayon::current_num_threads(),
         head.markdown(),
+        failure.markdown(),
+        perf_rows_markdown(head, failure),
         damping_markdown(damping),
         scaling_markdown(scaling)
     )
@@ -184,18 +285,22 @@ pub fn write_csv<T: Serialize>(path: &Path, rows: &[T]) -> Result<(), Error> {
     crate::output::write_atomic(path, &bytes)
 }
 
-/// Writes `damping.csv`, `scaling.csv`, `scaling.png` (two rows or more) and
-/// `perf.md` to `out`; returns the Markdown.
+/// Writes `phase2.csv`, `srm.csv`, `damping.csv`, `scaling.csv`,
+/// `scaling.png` (two rows or more) and `perf.md` to `out`; returns the
+/// Markdown.
 pub fn write_report(
     out: &Path,
     head: &Headline,
+    failure: &FailureFigures,
     damping: &[DampingRow],
     scaling: &[ScalingRow],
 ) -> Result<String, Error> {
+    write_csv(&out.join("phase2.csv"), &[&failure.phase2.block, &failure.phase2.lumped])?;
+    write_csv(&out.join("srm.csv"), &failure.srm)?;
     write_csv(&out.join("damping.csv"), damping)?;
     write_csv(&out.join("scaling.csv"), scaling)?;
     scaling_figure(&out.join("scaling.png"), scaling)?;
-    let md = perf_markdown(head, damping, scaling);
+    let md = perf_markdown(head, failure, damping, scaling);
     crate::output::write_atomic(&out.join("perf.md"), md.as_bytes())?;
     Ok(md)
 }

@@ -1,0 +1,190 @@
+//! Phase 2 and strength reduction on the paper's slip-surface slope
+//! ([`registry::SLOPE_SLIP`]), timed in the run that measures the other
+//! figures (issue 13, item 5):
+//!
+//! - [`phase2_figure`]: phase 2 to a decision with node-block masses (the
+//!   default) and with lumped masses, each from the scene's elastic state, as
+//!   `cdem run` runs it (the scene's `[failure]`: 0.5 m bound, 200,000-step
+//!   cap); steps are deterministic, the times are reported;
+//! - [`srm_figure`]: `cdem srm` on the scene the strength-reduction figures of
+//!   references/srm.md were measured on: the slip-surface scene without its
+//!   `[failure]` `max_steps` and `sliding_displacement` (default budget
+//!   10 `N_r` per trial), brittle (the paper's) or ductile joints on the
+//!   circle ([`SRM_VARIANTS`]); its wall time and the steps per trial.
+//!
+//! The goals and the baseline are in the registry ([`registry::GOAL_PHASE2_STEPS`],
+//! [`registry::PHASE2_STEPS_BASELINE`], [`registry::GOAL_SRM_SECONDS`],
+//! [`registry::THREEDEC_TRIAL_STEP_CAP`]).
+
+use std::path::Path;
+use std::time::Instant;
+
+use serde::Serialize;
+
+use crate::drivers::run::Watch;
+use crate::drivers::srm::{run_srm, Reduction, SrmProgress};
+use crate::error::Error;
+use crate::harness::registry;
+use crate::model::spec::Softening;
+use crate::scene::Scene;
+use crate::summary::EndState;
+
+/// What `cdem perf` measures on the slip-surface slope: phase 2 with both
+/// masses, and the strength reductions (none with `--no-srm`).
+#[derive(Debug, Clone, Serialize)]
+pub struct FailureFigures {
+    pub phase2: Phase2Figure,
+    pub srm: Vec<SrmFigure>,
+}
+
+/// [`phase2_figure`], and with `srm` every [`srm_figure`] of [`SRM_VARIANTS`].
+pub fn failure_figures(root: &Path, srm: bool, progress: &mut dyn FnMut(&str)) -> Result<FailureFigures, Error> {
+    let phase2 = phase2_figure(root, progress)?;
+    let srm = match srm {
+        true => SRM_VARIANTS.iter().map(|&(v, s)| srm_figure(root, v, s, progress)).collect::<Result<_, _>>()?,
+        false => Vec::new(),
+    };
+    Ok(FailureFigures { phase2, srm })
+}
+
+/// Phase 2 of the slip-surface slope with one kind of mass.
+#[derive(Debug, Clone, Serialize)]
+pub struct Phase2Run {
+    pub block_mass: bool,
+    pub end: EndState,
+    pub steps: usize,
+    /// Largest displacement since the elastic state (m).
+    pub max_displacement: f64,
+    pub failed_springs: usize,
+    /// Phase 2 alone (its solver's setup and the steps), the elastic state given (s).
+    pub seconds: f64,
+}
+
+impl Phase2Run {
+    /// Phase 2 ended in a decision (Equilibrium or GlobalSliding), not the step cap.
+    pub fn decided(&self) -> bool {
+        self.end != EndState::Undecided
+    }
+}
+
+/// Phase 2 of the slip-surface slope with node-block and with lumped masses.
+#[derive(Debug, Clone, Serialize)]
+pub struct Phase2Figure {
+    /// Steps of the elastic phase both start from.
+    pub elastic_steps: usize,
+    pub block: Phase2Run,
+    pub lumped: Phase2Run,
+}
+
+impl Phase2Figure {
+    /// Lumped-mass steps over node-block-mass steps.
+    pub fn lumped_over_block(&self) -> f64 {
+        self.lumped.steps as f64 / self.block.steps as f64
+    }
+}
+
+struct Quiet;
+impl Watch for Quiet {}
+
+/// The slip-surface scene under `root` with phase 2 on node-block masses or
+/// lumped ones (`[failure] block_mass`), its elastic phase solved: phase 2 is
+/// then `reduction.trial(1.0, ..)` (a factor of 1 leaves every strength as it
+/// is), as `cdem run` runs it after its PCG elastic phase (the bench
+/// `benches/phase2.rs` times that).
+pub fn slip_surface_reduction(root: &Path, block_mass: bool) -> Result<(Reduction, usize), Error> {
+    let mut scene = Scene::load(&root.join(registry::SLOPE_SLIP.input))?;
+    scene.failure.get_or_insert_with(Default::default).block_mass = block_mass;
+    Reduction::new(&scene)
+}
+
+/// Runs phase 2 of the slip-surface slope under `root` with node-block masses
+/// and with lumped masses, each from the elastic state.
+pub fn phase2_figure(root: &Path, progress: &mut dyn FnMut(&str)) -> Result<Phase2Figure, Error> {
+    let mut run = |block_mass: bool| -> Result<(Phase2Run, usize), Error> {
+        let masses = if block_mass { "node-block" } else { "lumped" };
+        progress(&format!("slip-surface slope: phase 2, {masses} masses"));
+        let (mut red, elastic_steps) = slip_surface_reduction(root, block_mass)?;
+        let t = Instant::now();
+        let (trial, _) = red.trial(1.0, &mut Quiet)?;
+        let seconds = t.elapsed().as_secs_f64();
+        let run = Phase2Run {
+            block_mass,
+            end: trial.outcome,
+            steps: trial.steps,
+            max_displacement: trial.max_displacement,
+            failed_springs: trial.failed_springs,
+            seconds,
+        };
+        Ok((run, elastic_steps))
+    };
+    let (block, elastic_steps) = run(true)?;
+    let (lumped, _) = run(false)?;
+    Ok(Phase2Figure { elastic_steps, block, lumped })
+}
+
+/// The softening of the slip circle's joints in the timed strength
+/// reductions: brittle (the paper's, the scene's own) and ductile
+/// (references/srm.md, the slowest of its rows).
+pub const SRM_VARIANTS: [(&str, Softening); 2] = [("brittle", Softening::Brittle), ("ductile", Softening::Ductile)];
+
+/// The strength-reduction scene of references/srm.md: the slip-surface scene
+/// under `root` without its `[failure]` `max_steps` and
+/// `sliding_displacement`, every breakable interface with `softening`.
+pub fn srm_scene(root: &Path, softening: Softening) -> Result<Scene, Error> {
+    let mut scene = Scene::load(&root.join(registry::SLOPE_SLIP.input))?;
+    let failure = scene.failure.get_or_insert_with(Default::default);
+    failure.max_steps = None;
+    failure.sliding_displacement = None;
+    for strength in scene.interface.iter_mut().filter_map(|i| i.strength.as_mut()) {
+        strength.softening = softening;
+    }
+    if let Some(s) = scene.joints.strength.as_mut() {
+        s.softening = softening;
+    }
+    Ok(scene)
+}
+
+/// One `cdem srm` of the slip-surface slope.
+#[derive(Debug, Clone, Serialize)]
+pub struct SrmFigure {
+    /// "brittle" or "ductile" ([`SRM_VARIANTS`]).
+    pub variant: String,
+    pub fs: Option<f64>,
+    pub trials: usize,
+    /// Mean and largest phase-2 steps of a trial.
+    pub mean_trial_steps: f64,
+    pub max_trial_steps: usize,
+    /// Trials that ran to their step budget (Undecided, counted unstable).
+    pub undecided: usize,
+    /// The step budget of each trial (10 `N_r`).
+    pub trial_budget: usize,
+    /// The whole strength reduction: model, elastic phase, every trial (s).
+    pub seconds: f64,
+}
+
+/// Runs `cdem srm`'s strength reduction on [`srm_scene`] (no files written).
+pub fn srm_figure(
+    root: &Path,
+    variant: &str,
+    softening: Softening,
+    progress: &mut dyn FnMut(&str),
+) -> Result<SrmFigure, Error> {
+    let scene = srm_scene(root, softening)?;
+    progress(&format!("slip-surface slope: cdem srm, {variant}"));
+    let (r, _) = run_srm(&scene, &mut |p| {
+        if let SrmProgress::TrialStart(f) = p {
+            progress(&format!("slip-surface slope: cdem srm, {variant}, trial F = {f:.4}"));
+        }
+    })?;
+    let steps: Vec<usize> = r.trials.iter().map(|t| t.steps).collect();
+    Ok(SrmFigure {
+        variant: variant.to_string(),
+        fs: r.fs,
+        trials: r.trials.len(),
+        mean_trial_steps: steps.iter().sum::<usize>() as f64 / steps.len().max(1) as f64,
+        max_trial_steps: steps.iter().copied().max().unwrap_or(0),
+        undecided: r.trials.iter().filter(|t| t.outcome == EndState::Undecided).count(),
+        trial_budget: r.trial_budget,
+        seconds: r.wall_s,
+    })
+}
