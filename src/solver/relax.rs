@@ -4,8 +4,10 @@
 //! [`Observer`].
 //!
 //! The rules, checked after every step in this order:
-//! 1. **tolerance**: the unbalanced-force ratio is below `tolerance`
-//!    ([`Stop::Converged`]);
+//! 1. **tolerance**: the unbalanced-force ratio is below `tolerance` and
+//!    the velocities are decaying: the kinetic energy is not above the
+//!    previous step's ([`Stop::Converged`]); a state that passes through a
+//!    small ratio while it still speeds up is not at rest;
 //! 2. **sliding** (if given), checked at the end of every window of
 //!    `window` steps ([`Stop::Sliding`]): the mass-weighted mean displacement
 //!    since `reference` grew in each of the last `windows` windows by more
@@ -164,6 +166,12 @@ pub fn max_displacement_since(u: &[f64], u0: &[f64]) -> f64 {
         .fold(0.0, f64::max)
 }
 
+/// Rule 1: the ratio is below the tolerance and the kinetic energy is not
+/// above the previous step's (the velocities are decaying).
+fn at_rest(ratio: f64, tolerance: f64, kinetic: f64, last_kinetic: f64) -> bool {
+    ratio < tolerance && kinetic <= last_kinetic
+}
+
 /// Steps `state` until a rule of `rules` fires (see the module doc).
 pub fn relax(
     solver: &mut Solver,
@@ -177,11 +185,14 @@ pub fn relax(
     let first = state.step;
     let mut stop = None;
     let mut watch = SlidingWatch::default();
+    let mut last_kinetic = f64::INFINITY;
     while stop.is_none() {
         let (unbalanced, kinetic) = solver.step(model, state)?;
         let steps = state.step - first;
         ratio = solver.ratio(unbalanced);
-        stop = if ratio < rules.tolerance {
+        let at_rest = at_rest(ratio, rules.tolerance, kinetic, last_kinetic);
+        last_kinetic = kinetic;
+        stop = if at_rest {
             Some(Stop::Converged)
         } else if rules.sliding.is_some_and(|s| s.slides(&mut watch, &state.u, steps)) {
             Some(Stop::Sliding)
@@ -201,4 +212,19 @@ pub fn relax(
     let stop = stop.expect("the loop ends with a stop");
     let converged = stop == Stop::Converged;
     Ok(RunReport { stop, converged, steps: state.step - first, dt: solver.dt(), unbalanced_ratio: ratio, history })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::at_rest;
+
+    #[test]
+    fn a_small_ratio_while_the_mass_still_speeds_up_is_not_rest() {
+        assert!(at_rest(1e-6, 1e-5, 1.0, 2.0));
+        assert!(at_rest(1e-6, 1e-5, 2.0, 2.0));
+        assert!(!at_rest(1e-6, 1e-5, 2.5, 2.0), "kinetic energy rising");
+        assert!(!at_rest(1e-4, 1e-5, 1.0, 2.0), "ratio above the tolerance");
+        // The first step has nothing to compare with.
+        assert!(at_rest(1e-6, 1e-5, 3.0, f64::INFINITY));
+    }
 }
