@@ -8,7 +8,7 @@
 //!   circle its `[lem]` finds: CDEM against FEM, and against the LEM.
 //! - On the conforming slip mesh, the springs of the interface give the same K
 //!   as the interface sampling of tests/slip_surface.rs.
-//! - `cdem run` and `cdem fem` write analysis.json and analysis.csv; bad
+//! - `cdem run` and `cdem fem` write analysis.json, analysis.csv and analysis.png; bad
 //!   tables are errors naming their key.
 
 use std::path::Path;
@@ -120,6 +120,7 @@ fn cdem_run_and_cdem_fem_write_the_analysis_files() {
         let mut lines = csv.lines();
         assert_eq!(lines.next().unwrap(), "source,s,x,z,area,sigma_n,tau,cohesion,friction_angle,k_i");
         assert_eq!(lines.count(), 400);
+        assert!(dir.join("analysis.png").is_file(), "the K_i figure");
     }
 }
 

@@ -334,6 +334,7 @@ fn run(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
         ),
     }
     if let Some(report) = &result.surface {
+        cdem::harness::surface::run_png(&result, &out.join("analysis.png"))?;
         print_surface(report);
     }
     Ok(if s.end_state == cdem::EndState::Undecided { Outcome::OutOfSteps } else { Outcome::Reached })
@@ -475,6 +476,7 @@ fn fem(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
         out.display()
     );
     if let Some(report) = &fem.surface {
+        cdem::harness::surface::fem_png(&fem, &out.join("analysis.png"))?;
         print_surface(report);
     }
     Ok(if s.converged { Outcome::Reached } else { Outcome::OutOfSteps })

@@ -17,4 +17,5 @@ pub mod reproduce;
 pub mod section;
 pub mod srm;
 pub mod study;
+pub mod surface;
 pub mod validation;

@@ -26,6 +26,7 @@ use crate::harness::section::{
     element_mean_displacement, front_joint_traces, front_patches, front_patches_deformed, front_patches_of_cells,
     spring_opening, spring_point,
 };
+use crate::harness::surface::weak_zones;
 use crate::harness::validation;
 use crate::model::Model;
 use plotters::style::RGBColor;
@@ -467,26 +468,6 @@ fn arc_x() -> impl Fn(f64) -> f64 {
     let end = *reg::slip_arc().last().expect("the arc has points");
     let dir = ((end.1 - c.zc).atan2(end.0 - c.xc) - a0).signum();
     move |s| c.xc + r * (a0 + dir * s / r).cos()
-}
-
-/// The slip surface cut where K_i crosses 1, from the toe, without merging:
-/// `(K_i < 1, s0, s1)` per zone; a zone starts halfway from the previous
-/// station (docs/method.md 4.3).
-fn weak_zones(pts: &[SurfacePoint], k_i: &[f64]) -> Vec<(bool, f64, f64)> {
-    let mut zones: Vec<(bool, f64, f64)> = Vec::new();
-    for (i, p) in pts.iter().enumerate() {
-        let weak = k_i[i] < 1.0;
-        let edge = if i == 0 { p.s } else { 0.5 * (pts[i - 1].s + p.s) };
-        match zones.last_mut() {
-            Some(z) if z.0 == weak => z.2 = p.s,
-            Some(z) => {
-                z.2 = edge;
-                zones.push((weak, edge, p.s));
-            }
-            None => zones.push((weak, edge, p.s)),
-        }
-    }
-    zones
 }
 
 /// Step 6, Fig. 10: progressive failure of the paper slope on its slip circle.
