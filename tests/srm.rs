@@ -22,6 +22,10 @@ fn check(case: Case, set: BlockOnPlane) -> Check {
     assert!(hi - lo <= 0.01 + 1e-12, "bracket width {}", hi - lo);
     assert!(lo <= analytic && analytic <= hi, "analytic {analytic} outside [{lo}, {hi}]");
     assert!(((fs - analytic) / analytic).abs() < reg::TOL_SRM_BLOCK);
+    // The bracket's upper end is a trial that slid, not one out of steps.
+    assert_eq!(r.hi_outcome, Some(cdem::EndState::GlobalSliding));
+    assert!(r.sliding_from.is_some_and(|f| f >= hi), "{:?}", r.sliding_from);
+    assert_eq!(r.undecided, r.trials.iter().filter(|t| t.outcome == cdem::EndState::Undecided).count());
     let id = if case.name == reg::BLOCK_SRM_FRICTION.name { "srm/block-friction" } else { "srm/block-cohesion" };
     reg::row(id).value(fs, analytic, t0.elapsed().as_secs_f64())
 }

@@ -456,6 +456,18 @@ fn srm(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
             out.display()
         ),
     }
+    if result.hi_outcome == Some(cdem::EndState::Undecided) {
+        println!(
+            "note: the bracket's upper end F = {} ran out of its {} steps without deciding (counted unstable, as FLAC \
+             counts a trial that does not converge); {}",
+            show(hi),
+            result.trial_budget,
+            match result.sliding_from {
+                Some(f) => format!("the smallest factor that slid is {f:.4}"),
+                None => "no trial slid".to_string(),
+            }
+        );
+    }
     Ok(if result.fs.is_some() { Outcome::Reached } else { Outcome::OutOfSteps })
 }
 

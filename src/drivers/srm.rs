@@ -65,6 +65,14 @@ pub struct SrmResult {
     /// (either None if never found).
     pub bracket: [Option<f64>; 2],
     pub trials: Vec<Trial>,
+    /// The outcome of the trial at `hi`: `Undecided` means the bracket's
+    /// upper end is a trial that ran out of budget (counted unstable), not
+    /// one that slid.
+    pub hi_outcome: Option<EndState>,
+    /// The smallest factor whose trial slid (`GlobalSliding`), if any did.
+    pub sliding_from: Option<f64>,
+    /// Trials that ran out of their budget (`Undecided`).
+    pub undecided: usize,
     /// Steps of the elastic phase.
     pub elastic_steps: usize,
     /// Step budget of each trial.
@@ -246,9 +254,16 @@ pub fn run_srm(scene: &Scene, progress: &mut dyn FnMut(SrmProgress)) -> Result<(
         }
     }
     let fs = lo.zip(hi).map(|(l, h)| 0.5 * (l + h));
+    let hi_outcome = hi.and_then(|h| trials.iter().find(|t| t.factor == h)).map(|t| t.outcome);
+    let sliding = trials.iter().filter(|t| t.outcome == EndState::GlobalSliding);
+    let sliding_from = sliding.map(|t| t.factor).reduce(f64::min);
+    let undecided = trials.iter().filter(|t| t.outcome == EndState::Undecided).count();
     let result = SrmResult {
         fs,
         bracket: [lo, hi],
+        hi_outcome,
+        sliding_from,
+        undecided,
         trials,
         elastic_steps,
         trial_budget,
