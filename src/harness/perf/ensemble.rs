@@ -173,7 +173,7 @@ fn wait(exe: &Path, child: Child, what: &str) -> Result<(), Error> {
 /// with this process's thread count (`dir/single`), once as one process on
 /// one thread (`dir/single-1-thread`), once as shards 0/2 and
 /// 1/2 started together with half the threads each (`dir/shard-{0,1}`),
-/// merged into `dir/merged`; compares the two `members.jsonl`.
+/// merged into `dir/merged`; compares the three `members.jsonl`.
 pub fn shards_figure(
     exe: &Path,
     root: &Path,
@@ -220,9 +220,10 @@ pub fn shards_figure(
             spawn(exe, root, per_shard, &all)
         })
         .collect::<Result<Vec<_>, _>>()?;
-    for (i, c) in children.into_iter().enumerate() {
-        wait(exe, c, &format!("cdem ensemble --shard {i}/2"))?;
-    }
+    // Both waited for before an error is returned: no shard is left running.
+    let ends: Vec<_> =
+        children.into_iter().enumerate().map(|(i, c)| wait(exe, c, &format!("cdem ensemble --shard {i}/2"))).collect();
+    ends.into_iter().collect::<Result<Vec<()>, _>>()?;
     let shards_s = t.elapsed().as_secs_f64();
 
     progress("ensemble: merging the two shards");
