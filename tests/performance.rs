@@ -86,3 +86,29 @@ fn phase2_and_srm_figures_for_the_report() {
     }
     record("performance-failure", &rows);
 }
+
+/// The timed ensembles of the slip-surface slope (members per hour without
+/// and with strength reduction, two shard processes against one) take about
+/// 2 minutes and need the `cdem` binary: `cdem perf` measures them, here
+/// their rows are skipped. What is checked: both inputs load, vary the
+/// slip surface's cohesion, and run the analyses the rows time.
+#[test]
+fn ensemble_figures_for_the_report() {
+    use cdem::drivers::ensemble::EnsembleInput;
+    use cdem::harness::perf::ensemble::{PAPER_SLOPE_SLIP, PAPER_SLOPE_SLIP_SRM};
+    use cdem::scene::Analysis;
+    for (input, analyses) in
+        [(PAPER_SLOPE_SLIP, vec![Analysis::Cdem]), (PAPER_SLOPE_SLIP_SRM, vec![Analysis::Cdem, Analysis::Srm])]
+    {
+        let e = EnsembleInput::load(Path::new(input)).unwrap();
+        assert_eq!(e.analyses, analyses, "{input}");
+        assert_eq!(e.spec.random.len(), 1, "{input}");
+        assert_eq!(e.spec.random[0].key, "interface[0].strength.cohesion", "{input}");
+        assert_eq!(e.means, [16e3], "{input}");
+    }
+    let rows = cdem::harness::validation::ensemble_perf_skipped(
+        "timed ensembles (about 2 min, shard processes of the cdem binary), measured by cargo run --release -- perf \
+         (references/performance.md)",
+    );
+    record("performance-ensemble", &rows);
+}

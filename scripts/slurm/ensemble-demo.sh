@@ -1,10 +1,16 @@
 #!/usr/bin/env bash
 # A real run of a cdem ensemble on SLURM (single node, Debian's slurm-wlm and munge),
 # compared with the same ensemble in one process. Run from the repository root as root:
-#   scripts/slurm/ensemble-demo.sh [OUTDIR]
-# Prints what references/ensemble.md records. Needs: cargo; installs slurm-wlm, munge.
+#   scripts/slurm/ensemble-demo.sh [OUTDIR [CASE...]]
+# CASE: lem, cdem (the 2026-12-01 record), slip (the slip-surface slope, 8 members,
+# 2 array tasks), slip-srm (the same with cdem srm per member, 4 members); default all.
+# Prints what references/ensemble.md records, with the load average before and after
+# each case (the machine may be shared). Needs: cargo; installs slurm-wlm, munge.
 set -euo pipefail
 out=${1:-out/slurm-demo}
+shift || true
+cases=("$@")
+[ ${#cases[@]} -gt 0 ] || cases=(lem cdem slip slip-srm)
 here=$(cd "$(dirname "$0")" && pwd)
 "$here/single-node.sh" start >/dev/null
 cargo build --release --quiet
@@ -15,7 +21,8 @@ mkdir -p "$out"
 run_case() { # name input members shards
     local name=$1 input=$2 members=$3 shards=$4 dir="$out/$1"
     mkdir -p "$dir"
-    local t0 jid mid
+    local t0 jid mid load0
+    load0=$(cut -d' ' -f1-3 /proc/loadavg)
     t0=$(date +%s.%N)
     jid=$(sbatch --parsable --chdir="$PWD" --output="$dir/slurm-%A_%a.out" --array=0-$((shards - 1)) \
         "$here/ensemble.sbatch" "$input" "$members" "$dir" 1)
@@ -30,13 +37,25 @@ run_case() { # name input members shards
     local t2
     t2=$(date +%s.%N)
     if cmp -s "$dir/merged/members.jsonl" "$dir/single/members.jsonl"; then same=identical; else same=DIFFER; fi
-    printf '%s: %s, %d members, %d array tasks (job %s) + merge (job %s, %s): %.1f s; one process: %.1f s; members.jsonl %s (%s bytes)\n' \
+    printf '%s: %s, %d members, %d array tasks (job %s) + merge (job %s, %s): %.1f s; one process (%s threads): %.1f s; speed-up %.2f; members.jsonl %s (%s bytes); load average %s before, %s after\n' \
         "$name" "$input" "$members" "$shards" "$jid" "$mid" "$state" "$(echo "$t1 - $t0" | bc)" \
-        "$(echo "$t2 - $t1" | bc)" "$same" "$(wc -c <"$dir/single/members.jsonl")"
-    grep -E "mean FS|probability of failure" "$dir/merged/ensemble.md" || true
+        "${RAYON_NUM_THREADS:-$(nproc)}" "$(echo "$t2 - $t1" | bc)" "$(echo "($t2 - $t1) / ($t1 - $t0)" | bc -l)" \
+        "$same" "$(wc -c <"$dir/single/members.jsonl")" "$load0" "$(cut -d' ' -f1-3 /proc/loadavg)"
+    grep -E "^Eq. 21 K|^- phase 2" "$dir/merged/ensemble.md" || true
+    grep -E "^\| (mean FS|probability of failure)" "$dir/merged/ensemble.md" || true
     [ "$same" = identical ]
 }
 
-echo "slurm: $(sinfo --version), node $(hostname -s) with $(nproc) CPUs"
-run_case lem verification/ensemble/paper-slope-lem.toml 2000 4
-run_case cdem verification/cases/slope/slope.toml 12 3
+echo "slurm: $(sinfo --version), node $(hostname -s) with $(nproc) CPUs; $(uptime)"
+for c in "${cases[@]}"; do
+    case $c in
+    lem) run_case lem verification/ensemble/paper-slope-lem.toml 2000 4 ;;
+    cdem) run_case cdem verification/cases/slope/slope.toml 12 3 ;;
+    slip) run_case slip verification/ensemble/paper-slope-slip.toml 8 2 ;;
+    slip-srm) run_case slip-srm verification/ensemble/paper-slope-slip-srm.toml 4 2 ;;
+    *)
+        echo "unknown case $c (lem, cdem, slip, slip-srm)" >&2
+        exit 2
+        ;;
+    esac
+done

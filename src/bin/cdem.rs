@@ -68,8 +68,8 @@ enum Command {
         out: PathBuf,
     },
     /// Performance: step bandwidth against stream, DR against FEM, LEM against pySlope, phase 2
-    /// and `cdem srm` on the slip-surface slope, the damping table and cost against size (gmsh
-    /// for refine 7, 10): DIR/perf.md (with the validation rows perf/*) and CSVs.
+    /// and `cdem srm` on the slip-surface slope, ensembles of it, the damping table and cost
+    /// against size (gmsh for refine 7, 10): DIR/perf.md (with the validation rows perf/*) and CSVs.
     /// Run from the repository root; about 20 minutes with the defaults.
     Perf {
         #[arg(long, default_value = "perf")]
@@ -88,6 +88,10 @@ enum Command {
         /// phase 2 to a decision (node-block against lumped masses, a few seconds) always runs.
         #[arg(long)]
         no_srm: bool,
+        /// Skip the timed ensembles of the slip-surface slope (about 2 minutes): members per hour
+        /// without and with `cdem srm` per member, two shard processes of this binary against one.
+        #[arg(long)]
+        no_ensemble: bool,
         /// A Python interpreter with pySlope installed (scripts/requirements-lem.txt): time pySlope
         /// in the same run. Without it the LEM ratio uses pySlope's recorded time (references/pyslope.json).
         #[arg(long, value_name = "PYTHON")]
@@ -262,10 +266,11 @@ fn main() -> ExitCode {
             st.finish();
             reached(r.map(|rows| eprintln!("study: {} points -> {}", rows.len(), out.join("study.csv").display())))
         }
-        Command::Perf { out, refine, dr_up_to, no_damping, no_srm, pyslope } => {
+        Command::Perf { out, refine, dr_up_to, no_damping, no_srm, no_ensemble, pyslope } => {
             let mut opts = cdem::harness::perf::PerfOptions {
                 damping: !no_damping,
                 srm: !no_srm,
+                ensemble: (!no_ensemble).then(|| std::env::current_exe().expect("the path of this executable")),
                 refine,
                 pyslope,
                 ..Default::default()

@@ -413,6 +413,19 @@ pub const GOAL_SRM_SECONDS: f64 = 60.0;
 pub const THREEDEC_TRIAL_STEP_CAP: f64 = 50_000.0;
 
 // ---------------------------------------------------------------------------
+// Ensembles of the slip-surface slope, timed (references/performance.md,
+// "Ensembles of the slip-surface slope in `cdem perf`").
+
+/// The goal for an ensemble of the paper slope with strength
+/// reduction per member: 100 members within one hour on 2 cores.
+pub const GOAL_SRM_MEMBERS_PER_HOUR: f64 = 100.0;
+/// Two shard processes against one process (with as many threads as the
+/// two shards together) on the same cores: sharding must not be slower
+/// (speed-up at least 1; it can gain only what the threads of one member
+/// leave idle).
+pub const GOAL_TWO_SHARDS_SPEEDUP: f64 = 1.0;
+
+// ---------------------------------------------------------------------------
 // The laterally confined column (references/column.md).
 
 /// A laterally confined elastic column under gravity: base fixed, sides on
@@ -674,6 +687,7 @@ const SLIP_CASE: &str = "paper slope, slip circle";
 const PHASE2_CASE: &str = "performance: slip-surface slope, phase 2";
 const SRM_BRITTLE_CASE: &str = "performance: cdem srm, slip-surface slope, brittle";
 const SRM_DUCTILE_CASE: &str = "performance: cdem srm, slip-surface slope, ductile";
+const ENSEMBLE_CASE: &str = "performance: ensemble of the slip-surface slope";
 
 /// Every row of the validation table but the extreme suite's (see [`rows`]).
 #[rustfmt::skip]
@@ -759,6 +773,11 @@ pub const ROWS: &[RowSpec] = &[
     spec("perf/srm/ductile/wall", SRM_DUCTILE_CASE, "cdem srm wall time (s) (goal <= 60)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/srm/ductile/trial-steps-mean", SRM_DUCTILE_CASE, "mean steps per trial (3DEC's default cap 50,000)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/srm/ductile/trial-steps-max", SRM_DUCTILE_CASE, "largest steps of a trial (3DEC's default cap 50,000)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
+    // Ensembles of the slip-surface slope (verification/ensemble/paper-slope-slip*.toml): measured by
+    // `cdem perf` only, skipped in the tests and in `cdem reproduce`.
+    spec("perf/ensemble/members-per-hour", ENSEMBLE_CASE, "members per hour, elastic + eq. 21 K + phase-2 end state, one process (against the SRM goal of 100)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),
+    spec("perf/ensemble/srm-members-per-hour", ENSEMBLE_CASE, "members per hour with cdem srm per member, one process (goal >= 100)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),
+    spec("perf/ensemble/two-shards-speedup", ENSEMBLE_CASE, "one process (its threads) / 2 concurrent shards + merge on the same cores, wall time (goal >= 1)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),
 ];
 
 /// Every row of the validation table, in its order: [`ROWS`] with the

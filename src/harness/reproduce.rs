@@ -134,7 +134,12 @@ const NOT_IN_REPRODUCE: &[(&str, &str)] = &[
     ("perf/srm/ductile/wall", SRM_PERF_ONLY),
     ("perf/srm/ductile/trial-steps-mean", SRM_PERF_ONLY),
     ("perf/srm/ductile/trial-steps-max", SRM_PERF_ONLY),
+    ("perf/ensemble/members-per-hour", ENSEMBLE_PERF_ONLY),
+    ("perf/ensemble/srm-members-per-hour", ENSEMBLE_PERF_ONLY),
+    ("perf/ensemble/two-shards-speedup", ENSEMBLE_PERF_ONLY),
 ];
+const ENSEMBLE_PERF_ONLY: &str =
+    "timed ensembles of the slip-surface slope (members with cdem srm, shard processes; about 2 min): cdem perf";
 const SRM_PERF_ONLY: &str = "two strength reductions of the slip-surface slope (10-90 s each): cdem perf";
 const SKFEM_ONLY: &str = "the FEM against the recorded scikit-fem solution: cargo test --release --test fem";
 const PROGRESSIVE_ONLY: &str =

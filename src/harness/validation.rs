@@ -15,6 +15,7 @@ use crate::analysis::Segment;
 use crate::drivers::RunResult;
 use crate::error::Error;
 use crate::fem::FemSolution;
+use crate::harness::perf::ensemble::EnsembleFigures;
 use crate::harness::perf::failure::{Phase2Figure, Phase2Run, SrmFigure};
 use crate::harness::perf::headline::Headline;
 use crate::harness::registry::{self as reg, row, ExtremeCase};
@@ -361,4 +362,82 @@ pub fn srm_perf_skipped(reason: &str) -> Vec<Check> {
         .flat_map(|(variant, _)| srm_perf_ids(variant))
         .map(|id| row(&id).skipped(reason))
         .collect()
+}
+
+/// The ids of the timed ensemble rows ([`ensemble_perf_rows`]).
+pub const ENSEMBLE_PERF_IDS: [&str; 3] =
+    ["perf/ensemble/members-per-hour", "perf/ensemble/srm-members-per-hour", "perf/ensemble/two-shards-speedup"];
+
+/// Ensembles of the slip-surface slope ([`crate::harness::perf::ensemble`]):
+/// members per hour without and with strength reduction, against the
+/// issue's goal of 100 with SRM, and the speed-up of two concurrent shards
+/// over one process. Merged shards that are not byte-identical to the one
+/// process's `members.jsonl` carry a defect, as SRM members without an FS do.
+pub fn ensemble_perf_rows(f: &EnsembleFigures) -> Vec<Check> {
+    let [members, srm, shards] = ENSEMBLE_PERF_IDS;
+    let goal = reg::GOAL_SRM_MEMBERS_PER_HOUR;
+    let (m, s, sh) = (&f.members, &f.srm, &f.shards);
+    let ends = |m: &crate::harness::perf::ensemble::MembersFigure| {
+        format!("phase 2: {} GlobalSliding, {} Equilibrium, {} Undecided", m.sliding, m.equilibrium, m.undecided)
+    };
+    let k = |m: &crate::harness::perf::ensemble::MembersFigure| m.mean_k.map_or("none".into(), |k| format!("{k:.3}"));
+    let load = |l: Option<f64>| l.map_or("unknown".into(), |l| format!("{l:.2}"));
+    let srm_row = row(srm).value(s.members_per_hour, goal, s.seconds).with_note(format!(
+        "{} members in {:.1} s on {} threads ({:.1} s each); mean SRM FS {}, {:.1} trials; mean K {}; {}",
+        s.members,
+        s.seconds,
+        s.threads,
+        s.seconds / s.members as f64,
+        s.mean_srm_fs.map_or("none".into(), |v| format!("{v:.3}")),
+        s.mean_srm_trials.unwrap_or(f64::NAN),
+        k(s),
+        ends(s)
+    ));
+    let srm_row = match s.members_without_srm_fs {
+        0 => srm_row,
+        n => srm_row.with_defect(format!("{n} members' strength reduction found no bracket")),
+    };
+    let shards_row =
+        row(shards).value(sh.speedup(), reg::GOAL_TWO_SHARDS_SPEEDUP, sh.one_process_s).with_note(format!(
+            "{} members: one process {:.1} s on {} threads ({:.1} s on 1: threads gain {:.2}x); 2 shards ({} \
+             thread(s) each) {:.1} s + merge {:.2} s, {:.2}x the one process on 1 thread; members.jsonl {} ({} \
+             bytes); load average {} before, {} after",
+            sh.members,
+            sh.one_process_s,
+            sh.threads,
+            sh.one_thread_s,
+            sh.thread_speedup(),
+            sh.threads_per_shard,
+            sh.shards_s,
+            sh.merge_s,
+            sh.speedup_over_one_thread(),
+            if sh.identical { "byte-identical" } else { "DIFFERENT" },
+            sh.jsonl_bytes,
+            load(sh.load_before),
+            load(sh.load_after)
+        ));
+    let shards_row = match sh.identical {
+        true => shards_row,
+        false => {
+            shards_row.with_defect("members.jsonl differs between the one process, one thread and the merged shards")
+        }
+    };
+    vec![
+        row(members).value(m.members_per_hour, goal, m.seconds).with_note(format!(
+            "{} members in {:.1} s on {} threads ({:.2} s each); mean K {}; {}",
+            m.members,
+            m.seconds,
+            m.threads,
+            m.seconds / m.members as f64,
+            k(m),
+            ends(m)
+        )),
+        srm_row,
+        shards_row,
+    ]
+}
+
+/// The timed ensemble rows as skipped, with the reason.
+pub fn ensemble_perf_skipped(reason: &str) -> Vec<Check> {
+    ENSEMBLE_PERF_IDS.iter().map(|id| row(id).skipped(reason)).collect()
 }

@@ -2,8 +2,8 @@
 //! run puts every ratio side by side: the criterion benches measure the same
 //! things more carefully; this module gives them to the validation report
 //! (`tests/performance.rs`) and to `cdem perf` ([`run_perf`]), which adds the
-//! strength reductions of the slip-surface slope, the damping table and the
-//! growth with size (references/performance.md).
+//! strength reductions of the slip-surface slope, timed ensembles of it, the
+//! damping table and the growth with size (references/performance.md).
 //!
 //! One file per concern:
 //! - [`stream`]: the machine's memory bandwidth (STREAM triad);
@@ -18,6 +18,9 @@
 //! - [`headline`](mod@headline): the four figures on the paper slope;
 //! - [`failure`]: phase 2 to a decision (node-block against lumped masses)
 //!   and `cdem srm` on the slip-surface slope;
+//! - [`ensemble`](mod@ensemble): members per hour of ensembles of the
+//!   slip-surface slope (with and without strength reduction) and the
+//!   speed-up of two shard processes;
 //! - [`damping`]: damping kind x mass scaling x block masses on one scene;
 //! - [`scaling`]: cost against size, fitted exponents;
 //! - [`tables`]: the Markdown tables, the CSV files and the figure.
@@ -33,6 +36,7 @@ use crate::error::Error;
 
 pub mod bytes;
 pub mod damping;
+pub mod ensemble;
 pub mod failure;
 pub mod headline;
 pub mod memory;
@@ -44,6 +48,7 @@ pub mod timing;
 
 pub use bytes::step_bytes;
 pub use damping::{damping_table, DampingRow};
+pub use ensemble::{ensemble_figures, members_figure, shards_figure, EnsembleFigures, MembersFigure, ShardsFigure};
 pub use failure::{
     failure_figures, phase2_figure, srm_figure, srm_scene, FailureFigures, Phase2Figure, Phase2Run, SrmFigure,
     SRM_VARIANTS,
@@ -66,6 +71,11 @@ pub struct PerfOptions {
     /// ([`failure::SRM_VARIANTS`]; about 15 s and 90 s). Phase 2 to a
     /// decision (a few seconds) always runs.
     pub srm: bool,
+    /// The `cdem` binary that runs the ensemble's shard processes (`cdem
+    /// perf` passes its own): with it, the timed ensembles of the
+    /// slip-surface slope ([`ensemble::ensemble_figures`], about 2 minutes;
+    /// their own strength reductions too, whatever `srm` says); None skips them.
+    pub ensemble: Option<std::path::PathBuf>,
     /// Resolutions of the scaling study (`refine` of slope.geo); those
     /// without a committed mesh need gmsh on PATH.
     pub refine: Vec<f64>,
@@ -85,6 +95,7 @@ impl Default for PerfOptions {
         Self {
             damping: true,
             srm: true,
+            ensemble: None,
             refine: vec![0.5, 1.0, 2.0, 4.0, 7.0, 10.0],
             lumped_up_to: 4000,
             dr_up_to: usize::MAX,
@@ -98,18 +109,23 @@ impl Default for PerfOptions {
 const DAMPING_MAX_STEPS: usize = 400_000;
 
 /// `cdem perf`: headline figures, phase 2 and strength reduction on the
-/// slip-surface slope, damping table and scaling study; writes `perf.md`
-/// (with the validation rows `perf/*` of the run), `phase2.csv`, `srm.csv`,
-/// `damping.csv`, `scaling.csv` and `scaling.png` to `out` (gmsh meshes in
-/// `out/meshes`) and returns `perf.md`.
+/// slip-surface slope, timed ensembles of it, damping table and scaling
+/// study; writes `perf.md` (with the validation rows `perf/*` of the run),
+/// `phase2.csv`, `srm.csv`, `ensemble.csv`, `damping.csv`, `scaling.csv` and
+/// `scaling.png` to `out` (gmsh meshes in `out/meshes`, the ensemble
+/// processes' output in `out/ensemble`) and returns `perf.md`.
 pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn FnMut(&str)) -> Result<String, Error> {
     std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
     let (scene, model) = paper_slope(root)?;
     let head = headline_with(root, &scene, &model, opts.pyslope.as_deref(), progress)?;
     let failure = failure_figures(root, opts.srm, progress)?;
+    let ensemble = match &opts.ensemble {
+        Some(exe) => Some(ensemble_figures(exe, root, &out.join("ensemble"), progress)?),
+        None => None,
+    };
     let damping =
         if opts.damping { damping_table(&model, &scene.solver, DAMPING_MAX_STEPS, progress) } else { Vec::new() };
     let meshes = scaling_meshes(root, &opts.refine, &out.join("meshes"), progress)?;
     let scaling = scaling_study(&scene, &meshes, opts.lumped_up_to, opts.dr_up_to, progress)?;
-    write_report(out, &head, &failure, &damping, &scaling)
+    write_report(out, &head, &failure, ensemble.as_ref(), &damping, &scaling)
 }

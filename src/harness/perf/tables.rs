@@ -1,5 +1,6 @@
 //! What `cdem perf` writes: the Markdown tables of the headline figures, of
 //! phase 2 and the strength reductions on the slip-surface slope, of the
+//! timed ensembles of it, of the
 //! validation rows `perf/*` these figures make, the damping table and the
 //! scaling study (with its fitted exponents), the rows as CSV, the
 //! cost-against-size figure, and `perf.md` made of the tables. Formatting
@@ -11,6 +12,7 @@ use std::path::Path;
 use serde::Serialize;
 
 use super::damping::DampingRow;
+use super::ensemble::EnsembleFigures;
 use super::failure::FailureFigures;
 use super::headline::Headline;
 use super::scaling::{exponents, ScalingRow};
@@ -133,9 +135,121 @@ impl FailureFigures {
     }
 }
 
+impl EnsembleFigures {
+    /// The figures as a Markdown table, each with its goal.
+    pub fn markdown(&self) -> String {
+        let mut md = String::new();
+        let _ = writeln!(md, "| figure | measured | goal / reference |\n|---|---|---|");
+        let goal = reg::GOAL_SRM_MEMBERS_PER_HOUR;
+        for (what, m) in [("elastic + eq. 21 K + phase 2", &self.members), ("with cdem srm per member", &self.srm)] {
+            let srm = match m.mean_srm_fs {
+                Some(fs) => format!(", mean SRM FS {fs:.3} ({:.1} trials)", m.mean_srm_trials.unwrap_or(f64::NAN)),
+                None => String::new(),
+            };
+            let _ = writeln!(
+                md,
+                "| `{}`, {what}: {} members, one process, {} threads | {:.0} members per hour ({:.1} s, {:.2} s \
+                 per member); mean K {}{srm}; phase 2: {} GlobalSliding, {} Equilibrium, {} Undecided | >= {goal} \
+                 per hour (with SRM) |",
+                m.input,
+                m.members,
+                m.threads,
+                m.members_per_hour,
+                m.seconds,
+                m.seconds / m.members as f64,
+                m.mean_k.map_or("none".into(), |k| format!("{k:.3}")),
+                m.sliding,
+                m.equilibrium,
+                m.undecided
+            );
+        }
+        let s = &self.shards;
+        let load = |l: Option<f64>| l.map_or("unknown".into(), |l| format!("{l:.2}"));
+        let _ = writeln!(
+            md,
+            "| `{}`, {} members: 2 concurrent shard processes ({} thread(s) each) + merge against one process ({} \
+             threads; and 1 thread) | {:.1} s + {:.2} s against {:.1} s (1 thread: {:.1} s): speed-up {:.2} ({:.2} \
+             over 1 thread; the threads alone {:.2}); members.jsonl {} ({} bytes); 1-min load average {} before, {} \
+             after on {} cores | >= {} |",
+            s.input,
+            s.members,
+            s.threads_per_shard,
+            s.threads,
+            s.shards_s,
+            s.merge_s,
+            s.one_process_s,
+            s.one_thread_s,
+            s.speedup(),
+            s.speedup_over_one_thread(),
+            s.thread_speedup(),
+            if s.identical { "byte-identical" } else { "**DIFFERENT**" },
+            s.jsonl_bytes,
+            load(s.load_before),
+            load(s.load_after),
+            std::thread::available_parallelism().map_or(0, |n| n.get()),
+            reg::GOAL_TWO_SHARDS_SPEEDUP
+        );
+        md
+    }
+
+    /// The figures as CSV rows (`ensemble.csv`).
+    pub fn csv_rows(&self) -> Vec<EnsembleCsvRow> {
+        let m = |what: &str, f: &super::ensemble::MembersFigure| EnsembleCsvRow {
+            what: what.to_string(),
+            input: f.input.clone(),
+            members: f.members,
+            threads: f.threads,
+            seconds: f.seconds,
+            members_per_hour: f.members_per_hour,
+        };
+        let s = &self.shards;
+        let per_hour = |t: f64| s.members as f64 * 3600.0 / t;
+        vec![
+            m("in-process", &self.members),
+            m("in-process-srm", &self.srm),
+            EnsembleCsvRow {
+                what: "one-process".into(),
+                input: s.input.clone(),
+                members: s.members,
+                threads: s.threads,
+                seconds: s.one_process_s,
+                members_per_hour: per_hour(s.one_process_s),
+            },
+            EnsembleCsvRow {
+                what: "one-process-1-thread".into(),
+                input: s.input.clone(),
+                members: s.members,
+                threads: 1,
+                seconds: s.one_thread_s,
+                members_per_hour: per_hour(s.one_thread_s),
+            },
+            EnsembleCsvRow {
+                what: "two-shards-and-merge".into(),
+                input: s.input.clone(),
+                members: s.members,
+                threads: s.threads_per_shard,
+                seconds: s.shards_s + s.merge_s,
+                members_per_hour: per_hour(s.shards_s + s.merge_s),
+            },
+        ]
+    }
+}
+
+/// One row of `ensemble.csv`.
+#[derive(Debug, Clone, Serialize)]
+pub struct EnsembleCsvRow {
+    pub what: String,
+    pub input: String,
+    pub members: usize,
+    /// Threads of the process (of each shard for the two shards).
+    pub threads: usize,
+    pub seconds: f64,
+    pub members_per_hour: f64,
+}
+
 /// The validation rows `perf/*` of a `cdem perf` run: the headline's, phase
-/// 2's and the strength reductions' (skipped if not run).
-pub fn perf_checks(head: &Headline, failure: &FailureFigures) -> Vec<Check> {
+/// 2's, the strength reductions' and the ensembles' (skipped if not run).
+pub fn perf_checks(head: &Headline, failure: &FailureFigures, ensemble: Option<&EnsembleFigures>) -> Vec<Check> {
     let mut rows = validation::perf_rows(head);
     rows.extend(validation::phase2_rows(&failure.phase2));
     if failure.srm.is_empty() {
@@ -144,14 +258,18 @@ pub fn perf_checks(head: &Headline, failure: &FailureFigures) -> Vec<Check> {
     for f in &failure.srm {
         rows.extend(validation::srm_perf_rows(f));
     }
+    match ensemble {
+        Some(e) => rows.extend(validation::ensemble_perf_rows(e)),
+        None => rows.extend(validation::ensemble_perf_skipped("not run: cdem perf --no-ensemble")),
+    }
     rows
 }
 
 /// The rows of [`perf_checks`] as the validation table shows them (the
 /// registry's rows `perf/*`, each with its result).
-pub fn perf_rows_markdown(head: &Headline, failure: &FailureFigures) -> String {
+pub fn perf_rows_markdown(head: &Headline, failure: &FailureFigures, ensemble: Option<&EnsembleFigures>) -> String {
     let specs: Vec<_> = reg::rows().into_iter().filter(|r| r.id.starts_with("perf/")).collect();
-    let table = Table::assemble(&specs, perf_checks(head, failure), &[], &|spec| {
+    let table = Table::assemble(&specs, perf_checks(head, failure, ensemble), &[], &|spec| {
         format!("not measured by cdem perf; see {}", spec.test)
     });
     format!("{}.\n\n{}", table.counts(), table.markdown())
@@ -234,23 +352,26 @@ pub fn scaling_markdown(scaling: &[ScalingRow]) -> String {
     md
 }
 
-/// `perf.md`: the headline, phase-2 and strength-reduction, validation-row,
-/// damping and scaling tables under their headings.
+/// `perf.md`: the headline, phase-2 and strength-reduction, ensemble,
+/// validation-row, damping and scaling tables under their headings.
 pub fn perf_markdown(
     head: &Headline,
     failure: &FailureFigures,
+    ensemble: Option<&EnsembleFigures>,
     damping: &[DampingRow],
     scaling: &[ScalingRow],
 ) -> String {
     format!(
         "# Performance (cdem perf)\n\n## Headline (paper slope, {} threads)\n\n{}\n\
          ## Phase 2 and strength reduction (slip-surface slope)\n\n{}\n\
+         ## Ensembles (slip-surface slope)\n\n{}\n\
          ## Validation rows of this run\n\n{}\n\
          ## Damping (paper slope, to 1e-5)\n\n{}\n## Growth with size\n\n{}",
         rayon::current_num_threads(),
         head.markdown(),
         failure.markdown(),
-        perf_rows_markdown(head, failure),
+        ensemble.map_or("Not run (`--no-ensemble`).\n".to_string(), |e| e.markdown()),
+        perf_rows_markdown(head, failure, ensemble),
         damping_markdown(damping),
         scaling_markdown(scaling)
     )
@@ -285,22 +406,27 @@ pub fn write_csv<T: Serialize>(path: &Path, rows: &[T]) -> Result<(), Error> {
     crate::output::write_atomic(path, &bytes)
 }
 
-/// Writes `phase2.csv`, `srm.csv`, `damping.csv`, `scaling.csv`,
+/// Writes `phase2.csv`, `srm.csv`, `ensemble.csv` (with the ensembles),
+/// `damping.csv`, `scaling.csv`,
 /// `scaling.png` (two rows or more) and `perf.md` to `out`; returns the
 /// Markdown.
 pub fn write_report(
     out: &Path,
     head: &Headline,
     failure: &FailureFigures,
+    ensemble: Option<&EnsembleFigures>,
     damping: &[DampingRow],
     scaling: &[ScalingRow],
 ) -> Result<String, Error> {
     write_csv(&out.join("phase2.csv"), &[&failure.phase2.block, &failure.phase2.lumped])?;
     write_csv(&out.join("srm.csv"), &failure.srm)?;
+    if let Some(e) = ensemble {
+        write_csv(&out.join("ensemble.csv"), &e.csv_rows())?;
+    }
     write_csv(&out.join("damping.csv"), damping)?;
     write_csv(&out.join("scaling.csv"), scaling)?;
     scaling_figure(&out.join("scaling.png"), scaling)?;
-    let md = perf_markdown(head, failure, damping, scaling);
+    let md = perf_markdown(head, failure, ensemble, damping, scaling);
     crate::output::write_atomic(&out.join("perf.md"), md.as_bytes())?;
     Ok(md)
 }
