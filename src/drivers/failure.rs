@@ -76,8 +76,12 @@ pub const SLIDING_WINDOW_CROSSINGS: f64 = 10.0;
 /// Windows in a row with a non-decaying displacement rate that decide sliding.
 pub const SLIDING_WINDOWS: usize = 3;
 /// Increments of the mean displacement per window below this fraction of the
-/// mean elastic displacement (phase 1) are rest.
-pub const SLIDING_FLOOR: f64 = 1e-3;
+/// mean elastic displacement (phase 1) are rest. It was 1e-3: the slip-surface
+/// slope's near-critical ductile trials crept (the mass about 8 % of the
+/// model, the kinetic energy rising) below it and ran to the budget; at 1e-4
+/// they slide within 10,000 steps and no verification case moved
+/// (docs/method.md 2.9).
+pub const SLIDING_FLOOR: f64 = 1e-4;
 
 /// The solver of phase 2: the phase-1 `solver` if its masses are the ones
 /// `params.block_mass` asks for, else a new one with `solver_params`.
