@@ -51,11 +51,16 @@ pub struct Station {
 /// Angular samples of the full circle used to find the arc.
 const SAMPLES: usize = 3600;
 
+/// The point at polar angle `a` of the circle `(xc, zc, r)` in the plane `y`.
+fn on_circle(xc: f64, zc: f64, r: f64, y: f64, a: f64) -> [f64; 3] {
+    [xc + r * a.cos(), y, zc + r * a.sin()]
+}
+
 impl Arc {
     /// The arc of the circle `(xc, zc, r)` in the plane `y` inside the cells
     /// of `locator`; the error says why there is none.
     pub fn find(locator: &CellLocator, xc: f64, zc: f64, r: f64, y: f64) -> Result<Self, String> {
-        let at = |a: f64| [xc + r * a.cos(), y, zc + r * a.sin()];
+        let at = |a: f64| on_circle(xc, zc, r, y, a);
         let inside = |a: f64| locator.locate(at(a)).is_some();
         let bottom = -std::f64::consts::FRAC_PI_2;
         let angle = |k: usize| bottom + std::f64::consts::TAU * k as f64 / SAMPLES as f64;
@@ -129,7 +134,8 @@ impl Arc {
     /// The point `[x, z]` at arc length `s` from the toe.
     pub fn point_at(&self, s: f64) -> [f64; 2] {
         let a = self.a_toe + (self.a_crest - self.a_toe).signum() * s / self.r;
-        [self.xc + self.r * a.cos(), self.zc + self.r * a.sin()]
+        let p = on_circle(self.xc, self.zc, self.r, self.y, a);
+        [p[0], p[2]]
     }
 
     /// `n` stations at the midpoints of equal arc intervals, toe to crest,
@@ -140,7 +146,7 @@ impl Arc {
         (0..n)
             .filter_map(|k| {
                 let a = self.a_toe + (k as f64 + 0.5) * da;
-                let x = [self.xc + self.r * a.cos(), self.y, self.zc + self.r * a.sin()];
+                let x = on_circle(self.xc, self.zc, self.r, self.y, a);
                 let s = self.r * (a - self.a_toe).abs();
                 locator.locate(x).map(|cell| Station { s, x, ds: self.r * da.abs(), cell })
             })

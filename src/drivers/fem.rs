@@ -6,6 +6,7 @@ use std::time::Instant;
 use super::run::read_mesh;
 use super::surface::{surface_analysis, SurfaceReport};
 use crate::fem::{self, FemProblem, FemSolution};
+use crate::mesh::Mesh;
 use crate::scene::Scene;
 
 /// `cdem fem`: the solution and the scene's `[analysis]` on it.
@@ -16,12 +17,11 @@ pub struct FemRun {
 
 /// Solves the scene's FEM reference and runs its `[analysis]` on the cell stresses.
 pub fn run_fem(scene: &Scene) -> crate::Result<FemRun> {
-    let solution = solve_scene(scene)?;
+    let t0 = Instant::now();
+    let mesh = read_mesh(scene)?;
+    let solution = solve_mesh(scene, &mesh, t0)?;
     let surface = match &scene.analysis {
-        Some(_) => {
-            let mesh = read_mesh(scene)?;
-            surface_analysis(scene, &mesh, &solution.coords, &solution.stress, None, "FEM (linear elastic)")?
-        }
+        Some(_) => surface_analysis(scene, &mesh, &solution.coords, &solution.stress, None, "FEM (linear elastic)")?,
         None => None,
     };
     Ok(FemRun { solution, surface })
@@ -30,8 +30,12 @@ pub fn run_fem(scene: &Scene) -> crate::Result<FemRun> {
 /// Reads the scene's mesh, perturbs it as CDEM does, and solves.
 pub fn solve_scene(scene: &Scene) -> crate::Result<FemSolution> {
     let t0 = Instant::now();
-    let mesh = read_mesh(scene)?;
-    let problem = FemProblem::from_mesh(&mesh, &scene.model_spec())?;
+    solve_mesh(scene, &read_mesh(scene)?, t0)
+}
+
+/// Solves on the scene's mesh, already read; the wall time counts from `t0`.
+fn solve_mesh(scene: &Scene, mesh: &Mesh, t0: Instant) -> crate::Result<FemSolution> {
+    let problem = FemProblem::from_mesh(mesh, &scene.model_spec())?;
     let mut sol = fem::solve(&problem)?;
     sol.summary.wall_s = t0.elapsed().as_secs_f64();
     Ok(sol)

@@ -156,11 +156,13 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         max_displacement: FieldExtremes::of(&state.u, None).max_abs_u,
     };
 
-    let surface = match &scene.analysis {
-        Some(_) => {
+    // The scene's `[analysis]` on the elastic state; its stresses are the
+    // final ones too when there is no phase 2.
+    let elastic_stress = scene.analysis.is_some().then(|| model.element_stresses(&state.u));
+    let surface = match &elastic_stress {
+        Some(stress) => {
             let springs = SpringSource { model: &model, u: &state.u, springs: &state.springs };
-            let stress = model.element_stresses(&state.u);
-            surface_analysis(scene, &mesh, &model.mesh_coords, &stress, Some(springs), "elastic (end of phase 1)")?
+            surface_analysis(scene, &mesh, &model.mesh_coords, stress, Some(springs), "elastic (end of phase 1)")?
         }
         None => None,
     };
@@ -187,7 +189,10 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         max_displacement: max_displacement_since(&state.u, &f.u_elastic),
     });
 
-    let stress = scene.output.stress.then(|| model.element_stresses(&state.u));
+    let stress = scene.output.stress.then(|| match (&failure, elastic_stress) {
+        (None, Some(elastic)) => elastic,
+        _ => model.element_stresses(&state.u),
+    });
     let field = FieldExtremes::of(&state.u, stress.as_deref());
     let last = phase2.as_ref().unwrap_or(&phase1);
     let summary = Summary {

@@ -99,33 +99,33 @@ pub fn surface_analysis(
         .interface
         .as_ref()
         .and_then(|name| scene.interface.iter().find(|i| &i.group == name).and_then(|i| i.strength.as_ref()));
-    let (per_station, strength_from): (Vec<(f64, f64)>, String) = match (spec.strength, interface_strength) {
-        (Some(st), _) => (vec![(st.cohesion, st.friction_angle); stations.len()], "analysis.strength".into()),
-        (None, Some(st)) => (
-            vec![(st.cohesion, st.friction_angle); stations.len()],
+    let uniform: Option<((f64, f64), String)> = match (spec.strength, interface_strength) {
+        (Some(st), _) => Some(((st.cohesion, st.friction_angle), "analysis.strength".into())),
+        (None, Some(st)) => Some((
+            (st.cohesion, st.friction_angle),
             format!("interface {:?}", spec.interface.as_deref().unwrap_or_default()),
-        ),
-        (None, None) => (material_strengths(scene, mesh, &stations)?, "[[lem.material]] of each station's cell".into()),
+        )),
+        (None, None) => None,
+    };
+    let (per_station, strength_from) = match &uniform {
+        Some((strength, from)) => (vec![*strength; stations.len()], from.clone()),
+        None => (material_strengths(scene, mesh, &stations)?, "[[lem.material]] of each station's cell".into()),
     };
     let points = from_cell_stresses(&arc, &stations, stress);
     let stresses = factors(points, per_station, min_segment);
 
     let springs = match (&spec.interface, springs) {
         (Some(name), Some(src)) => {
-            let (c, phi) = match (spec.strength, interface_strength) {
-                (Some(st), _) => (st.cohesion, st.friction_angle),
-                (None, Some(st)) => (st.cohesion, st.friction_angle),
-                (None, None) => {
-                    return Err(invalid(
-                        "analysis.strength",
-                        format!("missing: interface {name:?} has no strength and the springs need one"),
-                    ))
-                }
-            };
+            let strength = uniform.as_ref().map(|u| u.0).ok_or_else(|| {
+                invalid(
+                    "analysis.strength",
+                    format!("missing: interface {name:?} has no strength and the springs need one"),
+                )
+            })?;
             let pts = from_springs(src.model, src.u, src.springs, name, &arc.slip_circle())
                 .ok_or_else(|| invalid("analysis.interface", format!("{name:?} has no springs in the model")))?;
             let n = pts.len();
-            Some(factors(pts, vec![(c, phi); n], min_segment))
+            Some(factors(pts, vec![strength; n], min_segment))
         }
         _ => None,
     };

@@ -39,12 +39,7 @@ pub fn weak_zones(pts: &[SurfacePoint], k_i: &[f64]) -> Vec<(bool, f64, f64)> {
 pub fn run_png(result: &RunResult, path: &Path) -> Result<bool, Error> {
     let Some(report) = &result.surface else { return Ok(false) };
     let m = &result.model;
-    let inside = inside_circle(report);
-    let section = front_patches(m, |e| {
-        let c = m.elements.corners(e);
-        let (x, z) = c.iter().fold((0.0, 0.0), |a, &i| (a.0 + m.x0[i as usize][0], a.1 + m.x0[i as usize][2]));
-        inside(x / c.len() as f64, z / c.len() as f64)
-    });
+    let section = front_patches(m, |e| in_mass(report, m.elements.corners(e).iter().map(|&i| m.x0[i as usize])));
     draw(report, &section, path)?;
     Ok(true)
 }
@@ -53,19 +48,21 @@ pub fn run_png(result: &RunResult, path: &Path) -> Result<bool, Error> {
 pub fn fem_png(run: &FemRun, path: &Path) -> Result<bool, Error> {
     let Some(report) = &run.surface else { return Ok(false) };
     let sol = &run.solution;
-    let inside = inside_circle(report);
     let section = front_patches_of_cells(&sol.coords, &sol.cells, |c| {
-        let k = sol.cells[c].corners();
-        let (x, z) = k.iter().fold((0.0, 0.0), |a, &n| (a.0 + sol.coords[n][0], a.1 + sol.coords[n][2]));
-        inside(x / k.len() as f64, z / k.len() as f64)
+        in_mass(report, sol.cells[c].corners().iter().map(|&n| sol.coords[n]))
     });
     draw(report, &section, path)?;
     Ok(true)
 }
 
-/// 1 for a point inside the circle (the sliding mass), else 0.
-fn inside_circle(r: &SurfaceReport) -> impl Fn(f64, f64) -> f64 + '_ {
-    move |x, z| f64::from((x - r.arc.xc).hypot(z - r.arc.zc) < r.arc.r)
+/// 1 for a cell whose corners' centroid lies inside the circle (the sliding
+/// mass), else 0.
+fn in_mass(r: &SurfaceReport, corners: impl Iterator<Item = [f64; 3]>) -> f64 {
+    let (mut x, mut z, mut n) = (0.0, 0.0, 0.0);
+    for p in corners {
+        (x, z, n) = (x + p[0], z + p[2], n + 1.0);
+    }
+    f64::from((x / n - r.arc.xc).hypot(z / n - r.arc.zc) < r.arc.r)
 }
 
 fn draw(r: &SurfaceReport, section: &[Patch], path: &Path) -> Result<(), Error> {

@@ -183,7 +183,7 @@ pub fn srm_figure(
         trials: r.trials.len(),
         mean_trial_steps: steps.iter().sum::<usize>() as f64 / steps.len().max(1) as f64,
         max_trial_steps: steps.iter().copied().max().unwrap_or(0),
-        undecided: r.trials.iter().filter(|t| t.outcome == EndState::Undecided).count(),
+        undecided: r.undecided,
         trial_budget: r.trial_budget,
         seconds: r.wall_s,
     })
