@@ -28,6 +28,13 @@ pub struct FailedSprings {
     pub shear: usize,
 }
 
+impl FailedSprings {
+    /// Failed either way.
+    pub fn total(&self) -> usize {
+        self.tension + self.shear
+    }
+}
+
 /// One phase of a CDEM run.
 #[derive(Debug, Clone, Serialize)]
 pub struct PhaseSummary {
@@ -38,6 +45,27 @@ pub struct PhaseSummary {
     pub failed_springs: FailedSprings,
     /// Largest nodal displacement since the start of the phase (m).
     pub max_displacement: f64,
+}
+
+/// `|d|` of a 3-vector: the one per-node magnitude formula.
+#[inline]
+pub fn magnitude(d: [f64; 3]) -> f64 {
+    (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
+}
+
+/// Each node's displacement magnitude since `u0` (3 per node, like `u`).
+pub fn distances<'a>(u: &'a [f64], u0: &'a [f64]) -> impl Iterator<Item = f64> + 'a {
+    u.chunks(3).zip(u0.chunks(3)).map(|(a, b)| magnitude([a[0] - b[0], a[1] - b[1], a[2] - b[2]]))
+}
+
+/// Largest nodal displacement of `u` since `u0` (m).
+pub fn max_displacement_since(u: &[f64], u0: &[f64]) -> f64 {
+    distances(u, u0).fold(0.0, f64::max)
+}
+
+/// Largest nodal displacement magnitude of `u` (m).
+pub fn max_displacement(u: &[f64]) -> f64 {
+    u.chunks(3).map(|d| magnitude([d[0], d[1], d[2]])).fold(0.0, f64::max)
 }
 
 /// Extremes of a displacement field (3 per node) and of element stresses.
@@ -55,7 +83,7 @@ impl FieldExtremes {
         Self {
             max_abs_uz: uz.clone().map(f64::abs).fold(0.0, f64::max),
             min_uz: uz.fold(0.0, f64::min),
-            max_abs_u: u.chunks(3).map(|d| (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()).fold(0.0, f64::max),
+            max_abs_u: max_displacement(u),
             min_szz: stress.map(|s| s.iter().map(|x| x[2]).fold(f64::INFINITY, f64::min)),
         }
     }

@@ -60,7 +60,7 @@ fn headline_figures_for_the_report() {
     assert!(h.dr_block.converged, "DR of the paper slope converges");
     assert!(h.pcg.converged, "PCG of the paper slope converges");
     println!("{}", h.markdown());
-    let rows = cdem::harness::validation::perf_rows(&h);
+    let rows = cdem::harness::perf::rows::perf_rows(&h);
     for c in &rows {
         println!("{}: {:.3} against {} ({:?})", c.id, c.ours, c.reference, c.status());
     }
@@ -77,8 +77,8 @@ fn headline_figures_for_the_report() {
 fn phase2_and_srm_figures_for_the_report() {
     let f = cdem::harness::perf::failure::phase2_figure(Path::new("."), &mut |_| {}).unwrap();
     assert!(f.block.decided() && f.lumped.decided(), "{f:?}");
-    let mut rows = cdem::harness::validation::phase2_rows(&f);
-    rows.extend(cdem::harness::validation::srm_perf_skipped(
+    let mut rows = cdem::harness::perf::rows::phase2_rows(&f);
+    rows.extend(cdem::harness::perf::rows::srm_perf_skipped(
         "two strength reductions of 10-90 s each, measured by cargo run --release -- perf (references/performance.md)",
     ));
     for c in &rows {
@@ -106,7 +106,7 @@ fn ensemble_figures_for_the_report() {
         assert_eq!(e.spec.random[0].key, "interface[0].strength.cohesion", "{input}");
         assert_eq!(e.means, [16e3], "{input}");
     }
-    let rows = cdem::harness::validation::ensemble_perf_skipped(
+    let rows = cdem::harness::perf::rows::ensemble_perf_skipped(
         "timed ensembles (about 2 min, shard processes of the cdem binary), measured by cargo run --release -- perf \
          (references/performance.md)",
     );

@@ -93,7 +93,7 @@ fn joint_faces(model: &Model) -> Vec<Face> {
     let near =
         model.interfaces.iter().position(|i| i.name == "nearsurface_joints").expect("group nearsurface_joints") as u16;
     let mut by_pair: BTreeMap<(usize, usize), Vec<usize>> = BTreeMap::new();
-    for s in (0..sp.len()).filter(|&s| model.interfaces[sp.interface[s] as usize].strength.is_some()) {
+    for s in (0..sp.len()).filter(|&s| model.interfaces[sp.interface[s] as usize].props.strength.is_some()) {
         let (a, b) = (element_of[sp.a[s] as usize], element_of[sp.b[s] as usize]);
         by_pair.entry((a.min(b), a.max(b))).or_default().push(s);
     }

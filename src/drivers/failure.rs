@@ -16,8 +16,9 @@
 //!   ([`EndState::Undecided`]).
 //!
 //! Phase 2 keeps node-block masses (`[failure] block_mass`, default true;
-//! [`phase_solver`]). They stay stable when springs fail: see
-//! [`crate::solver::block_mass`].
+//! [`phase_plan`]). They stay stable when springs fail: see
+//! [`crate::solver::block_mass`]. What each spring can carry is the state's
+//! [`JointState`](crate::physics::joint::JointState), read by the joint law.
 //!
 //! Each spring's first failure step is recorded, and a stage row (failed
 //! springs by kind, displacement since phase 1, kinetic energy) every
@@ -25,30 +26,16 @@
 //! copy of the displacement, for VTK) is taken at a stage only when the
 //! failure state changed since the last frame, and at the end.
 
-use serde::Serialize;
-
-use super::run::{failed_springs, Frame, Phase, Watch};
+use super::phase::{failed_springs, Frame, Phase, Stage, Watch};
 use crate::error::Error;
 use crate::model::Model;
 use crate::physics::spring::SpringStatus;
 use crate::scene::FailureParams;
-use crate::solver::budget::{crossing_elements, response_steps};
+use crate::solver::budget::crossing_elements;
+pub use crate::solver::budget::PHASE2_RESPONSE_TIMES;
 use crate::solver::relax::max_displacement_since;
-use crate::solver::{relax, RunReport, Sliding, Solver, SolverParams, State, StepView, Stop, StopRules};
+use crate::solver::{PhasePlan, RunReport, Sliding, Solver, SolverParams, State, StepView, Stop};
 use crate::summary::{EndState, FailedSprings};
-
-/// A milestone of phase 2.
-#[derive(Debug, Clone, Copy, Serialize)]
-pub struct Stage {
-    /// Step within phase 2.
-    pub step: usize,
-    pub failed_tension: usize,
-    pub failed_shear: usize,
-    /// Largest displacement since the end of phase 1 (m).
-    pub max_displacement: f64,
-    pub kinetic_energy: f64,
-    pub unbalanced_ratio: f64,
-}
 
 /// What phase 2 produced.
 pub struct FailureResult {
@@ -63,14 +50,6 @@ pub struct FailureResult {
     pub frames: Vec<Frame>,
 }
 
-/// The scene's output settings phase 2 needs.
-#[derive(Debug, Clone, Copy)]
-pub struct Options {
-    /// Take frames (for VTK).
-    pub vtk: bool,
-    pub history_every: usize,
-}
-
 /// Window of the sliding rule, in element crossings `n_c`.
 pub const SLIDING_WINDOW_CROSSINGS: f64 = 10.0;
 /// Windows in a row with a non-decaying displacement rate that decide sliding.
@@ -83,35 +62,18 @@ pub const SLIDING_WINDOWS: usize = 3;
 /// (docs/method.md 2.9).
 pub const SLIDING_FLOOR: f64 = 1e-4;
 
-/// The solver of phase 2: the phase-1 `solver` if its masses are the ones
-/// `params.block_mass` asks for, else a new one with `solver_params`.
-pub fn phase_solver(
-    solver: Solver,
+/// The plan of phase 2 (and of every strength-reduction trial): dynamic
+/// relaxation with the masses `[failure] block_mass` asks for, the budget
+/// `[failure] max_steps` or [`PHASE2_RESPONSE_TIMES`] `N_r`; the phase-1
+/// `solver` is taken over if its masses fit.
+pub fn phase_plan(
     model: &Model,
     solver_params: &SolverParams,
     params: &FailureParams,
-) -> Result<Solver, Error> {
-    let block = params.block_mass && Solver::block_masses_possible(solver_params);
-    if solver.inertia().is_block() == block {
-        return Ok(solver);
-    }
-    Ok(Solver::with_masses(model, solver_params.clone(), block)?)
-}
-
-/// The default budget of phase 2 (and of each strength-reduction trial), in
-/// response times `N_r`. Near the limit the response slows down: on the
-/// stable slope (`SLOPE_SLIP_STABLE`) the trial at F = 1.6357 reached
-/// Equilibrium after 17,967 steps = 4.2 `N_r`; on the block on a plane the
-/// trial at F = 1.2109 (0.16 % below the analytic FS) after 6,050 steps =
-/// 3.0 `N_r` (references/srm.md).
-pub const PHASE2_RESPONSE_TIMES: usize = 10;
-
-/// The step budget of phase 2: `params.max_steps` or
-/// [`PHASE2_RESPONSE_TIMES`] `N_r` with the solver's damping and masses.
-pub fn phase_budget(solver: &Solver, model: &Model, params: &FailureParams) -> usize {
-    params
-        .max_steps
-        .unwrap_or_else(|| PHASE2_RESPONSE_TIMES * response_steps(model, solver.params(), solver.inertia().is_block()))
+    history_every: usize,
+    solver: Option<Solver>,
+) -> Result<PhasePlan, Error> {
+    Ok(PhasePlan::failure(model, solver_params, params.block_mass, params.max_steps, history_every, solver)?)
 }
 
 /// The sliding rule of phase 2 from the elastic displacement `u_elastic`.
@@ -129,28 +91,21 @@ pub fn sliding_rule<'a>(model: &'a Model, u_elastic: &'a [f64], params: &Failure
     rule
 }
 
-/// Runs phase 2 from the elastic `state` (which it advances).
+/// Runs phase 2 under `plan` from the elastic `state` (which it advances);
+/// with `vtk`, frames are taken.
 pub fn run(
-    solver: &mut Solver,
+    plan: &mut PhasePlan,
     model: &Model,
     state: &mut State,
     params: &FailureParams,
-    tolerance: f64,
-    options: Options,
+    vtk: bool,
     watch: &mut dyn Watch,
 ) -> Result<FailureResult, Error> {
-    solver.set_failure(model, true);
     let u_elastic = state.u.clone();
     let mut failed_at = vec![None; model.springs.len()];
     let mut stages = Vec::new();
     let mut frames = Vec::new();
     let mut framed = None::<FailedSprings>;
-    let rules = StopRules {
-        tolerance,
-        max_steps: phase_budget(solver, model, params),
-        sliding: Some(sliding_rule(model, &u_elastic, params)),
-        history_every: options.history_every,
-    };
     let mut observe = |view: &StepView| {
         let (st, k) = (view.state, view.steps);
         for (s, status) in st.springs.status.iter().enumerate() {
@@ -170,32 +125,19 @@ pub fn run(
             };
             stages.push(stage);
             watch.stage(&stage, st);
-            if options.vtk && (framed != Some(failed) || view.stop.is_some()) {
+            if vtk && (framed != Some(failed) || view.stop.is_some()) {
                 frames.push(Frame { step: k, time: st.time, u: st.u.clone() });
                 framed = Some(failed);
             }
         }
         watch.step(Phase::Failure, view)
     };
-    let report = relax(solver, model, state, &rules, &mut observe)?;
+    let sliding = sliding_rule(model, &u_elastic, params);
+    let report = plan.run(model, state, true, Some(sliding), &mut observe)?;
     let end = match report.stop {
         Stop::Converged => EndState::Equilibrium,
         Stop::Sliding => EndState::GlobalSliding,
         Stop::Budget | Stop::Caller => EndState::Undecided,
     };
     Ok(FailureResult { report, end, u_elastic, stages, failed_at, frames })
-}
-
-/// A watcher that keeps the displacement at every stage of phase 2 (parallel
-/// to [`FailureResult::stages`]), for figures and tests that look at every
-/// stage. It copies the whole displacement at each stage: a run does not.
-#[derive(Debug, Default)]
-pub struct StageSnapshots {
-    pub u: Vec<Vec<f64>>,
-}
-
-impl Watch for StageSnapshots {
-    fn stage(&mut self, _stage: &Stage, state: &State) {
-        self.u.push(state.u.clone());
-    }
 }

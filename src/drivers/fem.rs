@@ -3,7 +3,7 @@
 
 use std::time::Instant;
 
-use super::run::read_mesh;
+use super::input::read_mesh;
 use super::surface::{surface_analysis, SurfaceReport};
 use crate::fem::{self, FemProblem, FemSolution};
 use crate::mesh::Mesh;

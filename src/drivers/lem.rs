@@ -17,7 +17,7 @@ pub fn scene_lem_input(scene: &Scene) -> crate::Result<LemInput> {
         )
         .into());
     };
-    let mesh = super::read_mesh(scene)?;
+    let mesh = super::input::read_mesh(scene)?;
     let g = scene.loads.gravity;
     let gravity = (g[0] * g[0] + g[1] * g[1] + g[2] * g[2]).sqrt();
     let unit_weight_of = |group: &str| {

@@ -2,6 +2,8 @@
 //! the solver, the FEM and the LEM and below `output` (which writes what they
 //! return), and they relax only through [`solver::relax`](crate::solver::relax()).
 //!
+//! - [`input`]: a scene's mesh and model;
+//! - [`phase`]: the vocabulary they share (phases, watchers, frames, stages);
 //! - [`run`]: the CDEM run of a scene: phase 1 (elastic) and, for a scene
 //!   with `[failure]`, phase 2 ([`failure`]: breakable joints, stages, end state);
 //! - [`fem`]: the implicit FEM reference on the scene's continuous mesh;
@@ -13,15 +15,19 @@
 pub mod ensemble;
 pub mod failure;
 pub mod fem;
+pub mod input;
 pub mod lem;
+pub mod phase;
 pub mod run;
 pub mod srm;
 pub mod surface;
 
 pub use crate::summary::EndState;
-pub use failure::{FailureResult, Stage, StageSnapshots};
+pub use failure::FailureResult;
 pub use fem::{run_fem, solve_scene as solve_fem, FemRun};
+pub use input::{build_model, read_mesh};
 pub use lem::{load_lem_input, scene_lem_input};
-pub use run::{build_model, read_mesh, run_scene, run_watched, Frame, Phase, Progress, RunResult, Watch};
+pub use phase::{Frame, NoWatch, Phase, Progress, Stage, StageSnapshots, Watch};
+pub use run::{run_scene, run_watched, RunResult};
 pub use srm::{run_srm, SrmProgress, SrmResult, Trial};
 pub use surface::{surface_analysis, SurfaceReport};

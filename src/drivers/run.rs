@@ -1,64 +1,21 @@
 //! The CDEM run of a scene: read the mesh, build the model, solve phase 1
-//! (elastic; dynamic relaxation or conjugate gradients, `[solver] elastic`), then, for a scene with `[failure]`, phase 2 (breakable joints,
-//! [`super::failure`]); summarise. Orchestration only: the arithmetic is in
+//! (elastic; dynamic relaxation or conjugate gradients, `[solver] elastic`,
+//! as its [`PhasePlan`] chose), then, for a scene with `[failure]`, phase 2
+//! (breakable joints, [`super::failure`]); summarise. Orchestration only: the arithmetic is in
 //! the solver, the files are written by `output`.
 
-use std::ops::ControlFlow;
 use std::time::Instant;
 
-use super::failure::{self, FailureResult, Stage};
+use super::failure::{self, FailureResult};
+use super::input::read_mesh;
+use super::phase::{failed_springs, Frame, Phase, Progress, Watch};
 use super::surface::{surface_analysis, SpringSource, SurfaceReport};
 use crate::error::{Error, ModelError};
-use crate::mesh::gmsh::read_msh;
-use crate::mesh::Mesh;
 use crate::model::{self, Model};
-use crate::physics::spring::SpringStatus;
 use crate::scene::Scene;
-use crate::solver::budget::pcg_budget;
-use crate::solver::relax::max_displacement_since;
-use crate::solver::{relax, ElasticSolver, Pcg, RunReport, Solver, State, StepView, StopRules};
-use crate::summary::{EndState, FailedSprings, FieldExtremes, PhaseSummary, Summary};
-
-/// The two phases of a run.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Phase {
-    /// Phase 1: intact joints, to equilibrium.
-    Elastic = 1,
-    /// Phase 2: breakable joints (eq. 17-18).
-    Failure = 2,
-}
-
-/// What a caller sees of a run as it goes. Both methods default to nothing.
-pub trait Watch {
-    /// After every step of either phase; `Break` stops the phase
-    /// ([`crate::solver::Stop::Caller`]).
-    fn step(&mut self, _phase: Phase, _view: &StepView) -> ControlFlow<()> {
-        ControlFlow::Continue(())
-    }
-    /// At every stage row of phase 2, with the state it was taken from.
-    fn stage(&mut self, _stage: &Stage, _state: &State) {}
-}
-
-/// A watcher that reports `(global step, unbalanced ratio)` every 100 steps.
-pub struct Progress<'a>(pub &'a mut dyn FnMut(usize, f64));
-
-impl Watch for Progress<'_> {
-    fn step(&mut self, _phase: Phase, view: &StepView) -> ControlFlow<()> {
-        if view.steps.is_multiple_of(100) {
-            (self.0)(view.state.step, view.ratio);
-        }
-        ControlFlow::Continue(())
-    }
-}
-
-/// A displacement frame recorded during a phase.
-#[derive(Debug, Clone)]
-pub struct Frame {
-    /// Step within its phase.
-    pub step: usize,
-    pub time: f64,
-    pub u: Vec<f64>,
-}
+use crate::solver::relax::{max_displacement_since, unobserved};
+use crate::solver::{PhasePlan, RunReport, SolverParams, State, StepView};
+use crate::summary::{EndState, FieldExtremes, PhaseSummary, Summary};
 
 /// Everything a run produced.
 pub struct RunResult {
@@ -76,20 +33,6 @@ pub struct RunResult {
     /// Phase-1 frames (`output.frame_every`); the final state is not among them.
     pub frames: Vec<Frame>,
     pub summary: Summary,
-}
-
-/// Reads the scene's mesh; an error names the file.
-pub fn read_mesh(scene: &Scene) -> Result<Mesh, Error> {
-    let path = scene.mesh_path();
-    read_msh(&path).map_err(|e| match e {
-        Error::Mesh(source) => Error::MeshFile { path, source },
-        other => other,
-    })
-}
-
-/// Builds the model of a scene (mesh read and perturbed, springs made).
-pub fn build_model(scene: &Scene) -> Result<Model, Error> {
-    model::build(&read_mesh(scene)?, &scene.model_spec())
 }
 
 /// Before the first step: every connected part of the model must be held
@@ -125,29 +68,14 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
     // Phase 1.
     let frame_every = if scene.output.vtk { scene.output.frame_every } else { 0 };
     let mut frames = Vec::new();
-    let rules = |max_steps: usize| StopRules {
-        tolerance: scene.solver.tolerance,
-        max_steps,
-        sliding: None,
-        history_every: scene.output.history_every,
-    };
     let mut observe = |view: &StepView| {
         if frame_every > 0 && view.state.step.is_multiple_of(frame_every) {
             frames.push(Frame { step: view.state.step, time: view.state.time, u: view.state.u.clone() });
         }
         watch.step(Phase::Elastic, view)
     };
-    let (elastic, mut solver) = match scene.solver.elastic {
-        ElasticSolver::Dr => {
-            let mut solver = Solver::new(&model, scene.solver.clone())?;
-            let rules = rules(solver.step_budget(&model));
-            (relax(&mut solver, &model, &mut state, &rules, &mut observe)?, Some(solver))
-        }
-        ElasticSolver::Pcg => {
-            let rules = rules(pcg_budget(&model, &scene.solver));
-            (Pcg::new(&model)?.solve(&model, &mut state, &rules, &mut observe)?, None)
-        }
-    };
+    let mut plan = PhasePlan::elastic(&model, &scene.solver, scene.output.history_every)?;
+    let elastic = plan.run(&model, &mut state, false, None, &mut observe)?;
     let phase1 = PhaseSummary {
         end_state: if elastic.converged { EndState::Equilibrium } else { EndState::Undecided },
         steps: elastic.steps,
@@ -167,17 +95,13 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         None => None,
     };
 
-    // Phase 2, from the state phase 1 left (dynamic relaxation whatever
-    // solved phase 1).
+    // Phase 2, from the state phase 1 left, by dynamic relaxation whatever
+    // solved phase 1 (its DR solver goes on if its masses fit).
     let failure = match &scene.failure {
         Some(params) => {
-            let phase1_solver = match solver.take() {
-                Some(s) => s,
-                None => Solver::new(&model, scene.solver.clone())?,
-            };
-            let options = failure::Options { vtk: scene.output.vtk, history_every: scene.output.history_every };
-            let mut solver = failure::phase_solver(phase1_solver, &model, &scene.solver, params)?;
-            Some(failure::run(&mut solver, &model, &mut state, params, scene.solver.tolerance, options, watch)?)
+            let history_every = scene.output.history_every;
+            let mut plan = failure::phase_plan(&model, &scene.solver, params, history_every, plan.into_solver())?;
+            Some(failure::run(&mut plan, &model, &mut state, params, scene.output.vtk, watch)?)
         }
         None => None,
     };
@@ -200,7 +124,7 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         converged: last.end_state == EndState::Equilibrium,
         steps: phase1.steps + phase2.as_ref().map_or(0, |p| p.steps),
         wall_s: t0.elapsed().as_secs_f64(),
-        dt: solver.as_ref().map_or(elastic.dt, Solver::dt),
+        dt: elastic.dt,
         unbalanced_ratio: last.unbalanced_ratio,
         max_abs_uz: field.max_abs_uz,
         min_uz: field.min_uz,
@@ -219,36 +143,9 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
 /// Relaxes a model to equilibrium with the given settings and no watcher
 /// (benches, perf, tests): phase 1 of [`run_watched`] without the scene,
 /// by the solver `params.elastic` names.
-pub fn relax_elastic(
-    model: &Model,
-    params: &crate::solver::SolverParams,
-    history_every: usize,
-) -> Result<(State, RunReport), Error> {
+pub fn relax_elastic(model: &Model, params: &SolverParams, history_every: usize) -> Result<(State, RunReport), Error> {
     let mut state = State::new(model);
-    let report = match params.elastic {
-        ElasticSolver::Dr => Solver::new(model, params.clone())?.relax(model, &mut state, history_every)?,
-        ElasticSolver::Pcg => {
-            let rules = StopRules {
-                tolerance: params.tolerance,
-                max_steps: pcg_budget(model, params),
-                sliding: None,
-                history_every,
-            };
-            Pcg::new(model)?.solve(model, &mut state, &rules, &mut crate::solver::relax::unobserved)?
-        }
-    };
+    let report =
+        PhasePlan::elastic(model, params, history_every)?.run(model, &mut state, false, None, &mut unobserved)?;
     Ok((state, report))
-}
-
-/// Failed springs by kind.
-pub fn failed_springs(status: &[SpringStatus]) -> FailedSprings {
-    let mut failed = FailedSprings::default();
-    for s in status {
-        match s {
-            SpringStatus::Tension => failed.tension += 1,
-            SpringStatus::Shear => failed.shear += 1,
-            SpringStatus::Intact => {}
-        }
-    }
-    failed
 }

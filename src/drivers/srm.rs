@@ -1,10 +1,12 @@
 //! Strength reduction: the factor of safety of a scene (`cdem srm`), as
 //! FLAC and 3DEC compute it after Dawson, Roth & Drescher (1999).
 //!
-//! The elastic state is computed once (phase 1 of [`super::run`]). For a
-//! trial factor `F` every breakable interface gets `T / F`, `c / F` and
-//! `tan(phi) / F` ([`Strength::reduced`]), and phase 2 ([`super::failure`])
-//! runs from the elastic state with the trial's own solver: `Equilibrium` is
+//! The elastic state and the phase-2 plan (solver, masses, budget) are made
+//! once (phase 1 of [`super::run`]; [`super::failure::phase_plan`]). For a
+//! trial factor `F` every breakable spring gets `T / F`, `c / F` and
+//! `tan(phi) / F` in its joint state ([`JointState::reduced`]; the model is
+//! not touched), and phase 2 ([`super::failure`]) runs from the elastic
+//! state with the plan restarted as new: `Equilibrium` is
 //! stable, `GlobalSliding` unstable, and `Undecided` (the per-trial step
 //! budget, by default the model's response time `N_r`, ran out) is counted
 //! as unstable, as FLAC counts a trial that does not converge. Brittle
@@ -21,14 +23,15 @@ use std::ops::ControlFlow;
 
 use serde::Serialize;
 
-use super::failure::{self, phase_budget, phase_solver};
-use super::run::{run_watched, Phase, Watch};
+use super::failure::{self, phase_plan};
+use super::phase::{failed_springs, NoWatch, Phase, Watch};
+use super::run::run_watched;
 use crate::error::{Error, SceneError};
 use crate::model::Model;
-use crate::physics::spring::Strength;
+use crate::physics::joint::JointState;
 use crate::scene::{FailureParams, Scene};
-use crate::solver::{Solver, State, StepView};
-use crate::summary::EndState;
+use crate::solver::{PhasePlan, State, StepView};
+use crate::summary::{max_displacement, EndState};
 
 /// Bracket growth factor per trial before a bracket is found.
 pub const BRACKET_RATIO: f64 = 1.25;
@@ -107,12 +110,13 @@ impl Watch for Forward<'_, '_> {
     }
 }
 
-/// The model, its breakable strengths and the elastic state, for trials.
+/// The model, its strengths as given, the elastic state and the phase-2
+/// plan, made once and shared by every trial.
 pub struct Reduction {
     pub model: Model,
-    strengths: Vec<Option<Strength>>,
+    strengths: JointState,
     elastic: State,
-    scene: Scene,
+    plan: PhasePlan,
     params: FailureParams,
 }
 
@@ -132,77 +136,49 @@ impl Reduction {
             )
             .into());
         }
-        let strengths: Vec<Option<Strength>> = run.model.interfaces.iter().map(|i| i.strength).collect();
-        if strengths.iter().all(Option::is_none) {
+        if !run.model.has_breakable_interface() {
             return Err(SceneError::invalid(
                 "interface",
                 "strength reduction needs a breakable interface (a `strength` on [joints] or an [[interface]])",
             )
             .into());
         }
+        let plan = phase_plan(&run.model, &scene.solver, &params, usize::MAX, None)?;
         let steps = run.elastic.steps;
-        Ok((Self { model: run.model, strengths, elastic: run.state, scene: scene.clone(), params }, steps))
+        let strengths = run.state.joints.clone();
+        Ok((Self { model: run.model, strengths, elastic: run.state, plan, params }, steps))
     }
 
     /// Phase 2 with every breakable strength divided by `factor`; returns the
     /// trial and the displacement since the elastic state.
     pub fn trial(&mut self, factor: f64, watch: &mut dyn Watch) -> Result<(Trial, Vec<f64>), Error> {
-        for (iface, base) in self.model.interfaces.iter_mut().zip(&self.strengths) {
-            iface.strength = base.map(|s| s.reduced(factor));
-        }
-        let solver = Solver::new(&self.model, self.scene.solver.clone())?;
-        let mut solver = phase_solver(solver, &self.model, &self.scene.solver, &self.params)?;
         let mut state = self.elastic.clone();
-        let options = failure::Options { vtk: false, history_every: usize::MAX };
-        let r = failure::run(
-            &mut solver,
-            &self.model,
-            &mut state,
-            &self.params,
-            self.scene.solver.tolerance,
-            options,
-            watch,
-        )?;
+        state.joints = self.strengths.reduced(factor);
+        self.plan.restart();
+        let r = failure::run(&mut self.plan, &self.model, &mut state, &self.params, false, watch)?;
         let since: Vec<f64> = state.u.iter().zip(&r.u_elastic).map(|(a, b)| a - b).collect();
         let trial = Trial {
             factor,
             outcome: r.end,
             steps: r.report.steps,
-            max_displacement: since
-                .chunks(3)
-                .map(|d| (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt())
-                .fold(0.0, f64::max),
-            failed_springs: state
-                .springs
-                .status
-                .iter()
-                .filter(|s| **s != crate::physics::spring::SpringStatus::Intact)
-                .count(),
+            max_displacement: max_displacement(&since),
+            failed_springs: failed_springs(&state.springs.status).total(),
         };
         Ok((trial, since))
     }
 
     /// The step budget of one trial.
-    pub fn budget(&self) -> Result<usize, Error> {
-        let solver = phase_solver(
-            Solver::new(&self.model, self.scene.solver.clone())?,
-            &self.model,
-            &self.scene.solver,
-            &self.params,
-        )?;
-        Ok(phase_budget(&solver, &self.model, &self.params))
+    pub fn budget(&self) -> usize {
+        self.plan.budget
     }
 }
-
-struct NoWatch;
-impl Watch for NoWatch {}
 
 /// The strength reduction of a scene (see the module doc).
 pub fn run_srm(scene: &Scene, progress: &mut dyn FnMut(SrmProgress)) -> Result<(SrmResult, Model), Error> {
     let t0 = std::time::Instant::now();
     let (mut red, elastic_steps) = Reduction::new(scene)?;
     progress(SrmProgress::Elastic(elastic_steps));
-    let trial_budget = red.budget()?;
+    let trial_budget = red.budget();
     let mut trials = Vec::new();
     let (mut lo, mut hi) = (None::<f64>, None::<f64>);
     let mut mechanism = None;

@@ -164,9 +164,9 @@ fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Err
     progress("performance goals");
     let (scene, model) = crate::harness::perf::headline::paper_slope(Path::new("."))?;
     let h = crate::harness::perf::headline::headline(Path::new("."), &scene, &model, progress)?;
-    rep.checks.extend(validation::perf_rows(&h));
+    rep.checks.extend(crate::harness::perf::rows::perf_rows(&h));
     let phase2 = crate::harness::perf::failure::phase2_figure(Path::new("."), progress)?;
-    rep.checks.extend(validation::phase2_rows(&phase2));
+    rep.checks.extend(crate::harness::perf::rows::phase2_rows(&phase2));
     Ok(())
 }
 

@@ -11,8 +11,8 @@ use crate::mesh::perturb::perturb_nodes;
 use crate::mesh::shape::{cross, dot, norm, sub, CellDefect};
 use crate::mesh::Mesh;
 use crate::physics::element::element_operators;
-use crate::physics::material::{Material, YoungPoisson};
-use crate::physics::spring::{spring_stiffness, Springs};
+use crate::physics::material::{Material, MaterialLaw, YoungPoisson};
+use crate::physics::spring::Springs;
 
 /// Builds the model: 1. perturb nodes, 2. classify interfaces, 3. make node
 /// copies (merging across merged interfaces), 4. element operators and masses,
@@ -89,8 +89,7 @@ pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
     }
 
     // 5. Springs on every shared face that is not merged.
-    let springs =
-        make_springs(mesh, spec, &adj, &coords, &interfaces, &face_interface, |c, n| node_of_slot[slot(c, n)]);
+    let springs = make_springs(mesh, &adj, &coords, &interfaces, &face_interface, |c, n| node_of_slot[slot(c, n)]);
 
     // 6. Constraints: every copy of a fixed mesh node is fixed.
     let mesh_fixed = fixed_mesh_nodes(mesh, spec)?;
@@ -123,6 +122,7 @@ pub fn spec_materials(spec: &ModelSpec) -> Vec<Material> {
         .map(|m| Material {
             lame: YoungPoisson { young: m.youngs_modulus, poisson: m.poisson_ratio }.into(),
             density: m.density,
+            law: MaterialLaw::LinearElastic,
         })
         .collect()
 }
@@ -215,11 +215,8 @@ fn classify_interfaces(
     spec: &ModelSpec,
     adj: &FaceAdjacency,
 ) -> Result<(Vec<Interface>, HashMap<FaceKey, usize>), Error> {
-    let mut interfaces = vec![Interface {
-        name: "joints".into(),
-        mode: spec.joints.mode,
-        strength: spec.joints.strength.map(Into::into),
-    }];
+    let mut interfaces =
+        vec![Interface { name: "joints".into(), mode: spec.joints.mode, props: spec.joints.props(spec.joints) }];
     let mut map = HashMap::new();
     // The internal faces (between two cells), once, if any interface is named.
     let internal: HashSet<FaceKey> = match spec.interface.is_empty() {
@@ -245,7 +242,7 @@ fn classify_interfaces(
         for f in &g.facets {
             map.insert(face_key(f.nodes()), i + 1);
         }
-        interfaces.push(Interface { name: s.group.clone(), mode: s.mode, strength: s.strength.map(Into::into) });
+        interfaces.push(Interface { name: s.group.clone(), mode: s.mode, props: s.props(spec.joints) });
     }
     Ok((interfaces, map))
 }
@@ -286,7 +283,6 @@ pub fn cell_materials(mesh: &Mesh, spec: &ModelSpec) -> Result<Vec<u16>, Error> 
 /// the first cell.
 fn make_springs(
     mesh: &Mesh,
-    spec: &ModelSpec,
     adj: &FaceAdjacency,
     coords: &[[f64; 3]],
     interfaces: &[Interface],
@@ -300,7 +296,6 @@ fn make_springs(
         if interfaces[iface].mode == JointMode::Merged {
             continue;
         }
-        let (e_j, g_j, l) = joint_moduli(spec, iface);
         let p: Vec<[f64; 3]> = nodes.iter().map(|&n| coords[n]).collect();
         let m = p.len() as f64;
         let f = [0, 1, 2].map(|d| p.iter().map(|x| x[d]).sum::<f64>() / m);
@@ -315,7 +310,7 @@ fn make_springs(
             if a_id == b_id || nlen == 0.0 {
                 continue; // already joined through a merged interface
             }
-            let (kn, ks) = spring_stiffness(e_j, g_j, area, l);
+            let (kn, ks) = interfaces[iface].props.stiffness(area);
             sp.a.push(a_id);
             sp.b.push(b_id);
             sp.normal.push(nsum.map(|v| v / nlen));
@@ -326,17 +321,4 @@ fn make_springs(
         }
     }
     sp
-}
-
-/// `(E_j, G_j, L)` of an interface, falling back to `[joints]` (validated).
-fn joint_moduli(spec: &ModelSpec, iface: usize) -> (f64, f64, f64) {
-    let j = &spec.joints;
-    let (e, g, l) = match iface {
-        0 => (j.normal_modulus, j.shear_modulus, j.thickness),
-        i => {
-            let s = &spec.interface[i - 1];
-            (s.normal_modulus.or(j.normal_modulus), s.shear_modulus.or(j.shear_modulus), s.thickness.or(j.thickness))
-        }
-    };
-    (e.unwrap_or(f64::NAN), g.unwrap_or(f64::NAN), l.unwrap_or(f64::NAN))
 }

@@ -1,6 +1,8 @@
 //! The immutable [`Model`]: node copies (struct of arrays), elements with their
 //! condensed operators, springs, constraints and loads. Built once from a
-//! [`Mesh`](crate::mesh::Mesh) and a [`ModelSpec`] by [`build`].
+//! [`Mesh`](crate::mesh::Mesh) and a [`ModelSpec`] by [`build`], never
+//! changed after: what a run changes (displacements, spring history, what
+//! each joint can carry) is the solver's state.
 
 mod build;
 pub mod spec;
@@ -14,8 +16,9 @@ pub use spec::{JointMode, ModelSpec};
 use crate::mesh::shape::CellDefect;
 use crate::mesh::CellKind;
 use crate::physics::element::element_stress;
+use crate::physics::joint::{JointProps, JointState};
 use crate::physics::material::Material;
-use crate::physics::spring::{Springs, Strength};
+use crate::physics::spring::Springs;
 use crate::physics::tet_operator::TetOperators;
 
 /// Elements, struct of arrays. Element `e` owns corners
@@ -58,8 +61,9 @@ impl Elements {
 pub struct Interface {
     pub name: String,
     pub mode: JointMode,
-    /// Strength if the interface is breakable (failure phase only).
-    pub strength: Option<Strength>,
+    /// Stiffness and, if breakable, strength, as the scene gives them (what
+    /// a spring can carry now is the run's [`JointState`]).
+    pub props: JointProps,
 }
 
 /// Stride of an element's force slot in the solver's scratch (a hexahedron's
@@ -147,6 +151,18 @@ impl Model {
 
     pub fn n_nodes(&self) -> usize {
         self.x0.len()
+    }
+
+    /// Each spring's strength as the scene gives it (its interface's): the
+    /// joint state a run starts from.
+    pub fn joint_state(&self) -> JointState {
+        let strengths: Vec<_> = self.interfaces.iter().map(|i| i.props.strength).collect();
+        JointState::new(&self.springs.interface, &strengths)
+    }
+
+    /// Whether any interface is breakable (has a strength).
+    pub fn has_breakable_interface(&self) -> bool {
+        self.interfaces.iter().any(|i| i.props.strength.is_some())
     }
 
     /// Stress of every element (Pa, Voigt xx yy zz yz xz xy) for displacements `u`.

@@ -1,10 +1,13 @@
 //! What a model is built from besides its mesh: the model sections of a
-//! scene file (`[perturbation]`, `[[material]]`, `[joints]`, `[[interface]]`,
+//! scene file (`[perturbation]`, `[[material]]`, `[joints]` and `[[interface]]`,
 //! `[[boundary]]`) and gravity. The scene parses them; [`build`](super::build)
 //! reads them through a [`ModelSpec`]. Keys and defaults are documented in
 //! the `scene` module.
 
 use serde::Deserialize;
+
+pub use crate::physics::joint::Softening;
+use crate::physics::joint::{JointProps, JointStrength};
 
 /// The model's inputs, borrowed from a scene (or made by hand in a test).
 #[derive(Debug, Clone, Copy)]
@@ -13,9 +16,9 @@ pub struct ModelSpec<'a> {
     /// One per volume group, in scene order: material `i` is `material[i]`.
     pub material: &'a [MaterialSection],
     /// The default interface (index 0).
-    pub joints: &'a Joints,
+    pub joints: &'a JointSection,
     /// Interfaces overriding the default (index `i + 1`).
-    pub interface: &'a [InterfaceSection],
+    pub interface: &'a [JointSection],
     pub boundary: &'a [Boundary],
     /// Gravitational acceleration (m/s^2).
     pub gravity: [f64; 3],
@@ -64,10 +67,18 @@ pub enum JointMode {
     Merged,
 }
 
-/// The default structural plane: every interface not listed in `[[interface]]`.
+/// A structural plane's table, one shape for `[joints]` (the default: every
+/// element interface not listed in `[[interface]]`) and each `[[interface]]`
+/// (a surface physical group lying between elements, whose absent moduli
+/// default to `[joints]`'). The model reads it as a [`JointProps`] through
+/// [`JointSection::props`].
 #[derive(Debug, Clone, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct Joints {
+pub struct JointSection {
+    /// `[[interface]]` only (required there, refused in `[joints]`): the
+    /// surface physical group.
+    #[serde(default)]
+    pub group: String,
     #[serde(default)]
     pub mode: JointMode,
     /// `E_j` (Pa).
@@ -76,8 +87,26 @@ pub struct Joints {
     pub shear_modulus: Option<f64>,
     /// Equivalent thickness `L` (m).
     pub thickness: Option<f64>,
-    /// Makes these joints breakable (eq. 17-18) in the failure phase.
+    /// Makes the plane breakable (eq. 17-18) in the failure phase.
     pub strength: Option<StrengthSection>,
+}
+
+impl JointSection {
+    /// `(E_j, G_j, L)`, each falling back to `default`'s (`[joints]`).
+    pub fn moduli(&self, default: &JointSection) -> [Option<f64>; 3] {
+        [
+            self.normal_modulus.or(default.normal_modulus),
+            self.shear_modulus.or(default.shear_modulus),
+            self.thickness.or(default.thickness),
+        ]
+    }
+
+    /// The plane's properties, moduli falling back to `default`'s (NaN where
+    /// neither gives one: a merged interface, which has no springs).
+    pub fn props(&self, default: &JointSection) -> JointProps {
+        let [e, g, l] = self.moduli(default).map(|v| v.unwrap_or(f64::NAN));
+        JointProps { normal_modulus: e, shear_modulus: g, thickness: l, strength: self.strength.map(Into::into) }
+    }
 }
 
 /// Strength of a breakable structural plane.
@@ -96,40 +125,15 @@ pub struct StrengthSection {
     pub softening: Softening,
 }
 
-/// What a spring keeps of its strength once it has failed.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize, serde::Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Softening {
-    /// Cohesion and tensile strength lost at failure (eq. 17-18 as in the paper).
-    #[default]
-    Brittle,
-    /// Strength kept: perfectly plastic Mohr-Coulomb with a tension cap.
-    Ductile,
-}
-
-impl From<StrengthSection> for crate::physics::spring::Strength {
+impl From<StrengthSection> for JointStrength {
     fn from(s: StrengthSection) -> Self {
         Self {
             tensile: s.tensile,
             cohesion: s.cohesion,
             tan_phi: s.friction_angle.to_radians().tan(),
-            ductile: s.softening == Softening::Ductile,
+            softening: s.softening,
         }
     }
-}
-
-/// An interface group (a surface physical group lying between elements).
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct InterfaceSection {
-    pub group: String,
-    #[serde(default)]
-    pub mode: JointMode,
-    pub normal_modulus: Option<f64>,
-    pub shear_modulus: Option<f64>,
-    pub thickness: Option<f64>,
-    /// Makes this interface breakable (eq. 17-18) in the failure phase.
-    pub strength: Option<StrengthSection>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]

@@ -10,9 +10,16 @@
 //! | 16  | [`spring::spring_stiffness`]: `K_n = E_j A / L`, `K_s = G_j A / L` |
 //! | 17  | [`spring::tension_cutoff`]: `F_n >= T A` -> `F_n = F_s = 0` |
 //! | 18  | [`spring::mohr_coulomb`]: `|F_s| > P tan(phi) + c A` -> `|F_s| = P tan(phi)` |
+//! | 15, 17-18 | [`joint::CoulombJoint`]: one breakable spring with its history (brittle or ductile) |
+//!
+//! The two constitutive seams: [`joint`] (a [`joint::JointLaw`] reads a
+//! spring, its strength in [`joint::JointState`] and its history) and
+//! [`material`] (a [`material::MaterialLaw`] per element group; linear
+//! elastic condenses to `K_e`).
 
 pub mod damping;
 pub mod element;
+pub mod joint;
 pub mod material;
 pub mod spring;
 pub mod tet_operator;

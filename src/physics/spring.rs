@@ -52,27 +52,14 @@ pub enum SpringStatus {
     Shear,
 }
 
-/// Strength of a breakable interface (SI: Pa, Pa, dimensionless).
+/// One spring as a law sees it: stiffness (N/m), unit normal out of node
+/// `a`'s element, and area share (m^2).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Strength {
-    pub tensile: f64,
-    pub cohesion: f64,
-    pub tan_phi: f64,
-    /// Ductile: the strength is kept after failure ([`breakable_spring_force`]).
-    pub ductile: bool,
-}
-
-impl Strength {
-    /// The strength reduced by a factor `f` (strength reduction):
-    /// `T / f`, `c / f`, `tan(phi) / f`.
-    pub fn reduced(&self, f: f64) -> Self {
-        Self {
-            tensile: self.tensile / f,
-            cohesion: self.cohesion / f,
-            tan_phi: self.tan_phi / f,
-            ductile: self.ductile,
-        }
-    }
+pub struct Spring {
+    pub kn: f64,
+    pub ks: f64,
+    pub normal: [f64; 3],
+    pub area: f64,
 }
 
 /// The immutable springs of a model, struct of arrays.
@@ -94,6 +81,11 @@ impl Springs {
     }
     pub fn is_empty(&self) -> bool {
         self.a.is_empty()
+    }
+    /// Spring `s` as a joint law sees it.
+    #[inline]
+    pub fn get(&self, s: usize) -> Spring {
+        Spring { kn: self.kn[s], ks: self.ks[s], normal: self.normal[s], area: self.area[s] }
     }
 }
 
@@ -126,111 +118,6 @@ pub fn spring_contact_force(
     if status != SpringStatus::Intact && f_n > 0.0 {
         return [0.0; 3];
     }
-    [0, 1, 2].map(|i| f_n * n[i] + f_s[i])
-}
-
-/// Eq. 15 with failure (eq. 17-18) for one breakable spring: returns the
-/// force on node `a` and updates the spring's plastic slip and status.
-///
-/// - intact: tension cut-off (eq. 17) breaks it (force zero now); else
-///   Mohr–Coulomb with cohesion (eq. 18): if exceeded, it slips, loses its
-///   cohesion and tensile strength (brittle) and keeps `P tan(phi)`;
-/// - broken (either way): open (`F_n > 0`) carries nothing and its shear
-///   reference follows the motion (it recloses with zero shear force);
-///   closed carries compression and at most `P tan(phi)` of friction.
-///
-/// Ductile strength (`strength.ductile`): failure changes the status (for
-/// the record) but not the strength. The normal force is capped at `T A`
-/// (no normal plastic displacement is kept: the cap is a limit on the
-/// force, not a memory), and the shear force at `P tan(phi) + c A` at every
-/// step, `P = max(-F_n, 0)`.
-///
-/// Plastic slip is updated so that `K_s (d_s - d_s^p)` equals the returned
-/// shear force.
-// One spring's geometry, stiffness, strength and state, passed by value to keep
-// the kernel free of the model's layout.
-#[allow(clippy::too_many_arguments)]
-#[inline]
-pub fn breakable_spring_force(
-    kn: f64,
-    ks: f64,
-    n: [f64; 3],
-    d: [f64; 3],
-    area: f64,
-    strength: &Strength,
-    slip: &mut [f64; 3],
-    status: &mut SpringStatus,
-) -> [f64; 3] {
-    let (f_n, f_s) = spring_force(kn, ks, n, d, *slip);
-    if strength.ductile {
-        return ductile_spring_force(f_n, f_s, n, ks, area, strength, slip, status);
-    }
-    let cohesion = match *status {
-        SpringStatus::Intact => {
-            if tension_cutoff(f_n, strength.tensile, area) {
-                *status = SpringStatus::Tension;
-                *slip = [0, 1, 2].map(|i| slip[i] + f_s[i] / ks);
-                return [0.0; 3];
-            }
-            strength.cohesion
-        }
-        SpringStatus::Tension | SpringStatus::Shear => {
-            if f_n > 0.0 {
-                *slip = [0, 1, 2].map(|i| slip[i] + f_s[i] / ks);
-                return [0.0; 3];
-            }
-            0.0
-        }
-    };
-    let fs_abs = (f_s[0] * f_s[0] + f_s[1] * f_s[1] + f_s[2] * f_s[2]).sqrt();
-    let f_s = match mohr_coulomb(f_n, fs_abs, strength.tan_phi, cohesion, area) {
-        None => f_s,
-        Some(limit) => {
-            *status = SpringStatus::Shear;
-            let scale = limit / fs_abs;
-            let kept = f_s.map(|v| v * scale);
-            *slip = [0, 1, 2].map(|i| slip[i] + (f_s[i] - kept[i]) / ks);
-            kept
-        }
-    };
-    [0, 1, 2].map(|i| f_n * n[i] + f_s[i])
-}
-
-/// The ductile branch of [`breakable_spring_force`].
-#[allow(clippy::too_many_arguments)]
-#[inline]
-fn ductile_spring_force(
-    f_n: f64,
-    f_s: [f64; 3],
-    n: [f64; 3],
-    ks: f64,
-    area: f64,
-    strength: &Strength,
-    slip: &mut [f64; 3],
-    status: &mut SpringStatus,
-) -> [f64; 3] {
-    let cap = strength.tensile * area;
-    let f_n = if f_n > cap {
-        if *status == SpringStatus::Intact {
-            *status = SpringStatus::Tension;
-        }
-        cap
-    } else {
-        f_n
-    };
-    let fs_abs = (f_s[0] * f_s[0] + f_s[1] * f_s[1] + f_s[2] * f_s[2]).sqrt();
-    let f_s = match mohr_coulomb(f_n, fs_abs, strength.tan_phi, strength.cohesion, area) {
-        None => f_s,
-        Some(_) => {
-            if *status == SpringStatus::Intact {
-                *status = SpringStatus::Shear;
-            }
-            let limit = (-f_n).max(0.0) * strength.tan_phi + strength.cohesion * area;
-            let kept = f_s.map(|v| v * limit / fs_abs);
-            *slip = [0, 1, 2].map(|i| slip[i] + (f_s[i] - kept[i]) / ks);
-            kept
-        }
-    };
     [0, 1, 2].map(|i| f_n * n[i] + f_s[i])
 }
 

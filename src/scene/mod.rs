@@ -69,7 +69,7 @@ use serde::Deserialize;
 
 use crate::error::SceneError;
 pub use crate::model::spec::{
-    Axis, Boundary, InterfaceSection, JointMode, Joints, MaterialSection, ModelSpec, Perturbation, StrengthSection,
+    Axis, Boundary, JointMode, JointSection, MaterialSection, ModelSpec, Perturbation, StrengthSection,
 };
 use crate::solver::SolverParams;
 pub use analysis::{AnalysisSpec, CircleSpec, SurfaceStrength};
@@ -83,9 +83,9 @@ pub struct Scene {
     pub perturbation: Perturbation,
     pub material: Vec<MaterialSection>,
     #[serde(default)]
-    pub joints: Joints,
+    pub joints: JointSection,
     #[serde(default)]
-    pub interface: Vec<InterfaceSection>,
+    pub interface: Vec<JointSection>,
     #[serde(default)]
     pub boundary: Vec<Boundary>,
     #[serde(default)]
@@ -163,8 +163,9 @@ pub struct FailureParams {
     /// phase 1 passes this bound (m). Default: none (the displacement rate
     /// decides, see [`crate::solver::Sliding`]).
     pub sliding_displacement: Option<f64>,
-    /// Node-block masses in phase 2 (default true; only with mass scaling and
-    /// viscous or kinetic damping, lumped masses otherwise). On the paper's
+    /// Node-block masses in phase 2 (default true; only where
+    /// [`SolverParams::block_masses`] allows them: mass scaling and viscous
+    /// damping, lumped masses otherwise). On the paper's
     /// slip-surface case they decide in 2,160 steps where lumped masses take
     /// 4,752 (58,580 before the displacement-rate rule; references/performance.md,
     /// rows `perf/phase2/*`).

@@ -11,7 +11,7 @@ fn finite_positive(key: &str, v: f64) -> Result<(), SceneError> {
     }
 }
 
-fn stiffness_given(key: &str, e: Option<f64>, g: Option<f64>, l: Option<f64>) -> Result<(), SceneError> {
+fn stiffness_given(key: &str, [e, g, l]: [Option<f64>; 3]) -> Result<(), SceneError> {
     for (name, v) in [("normal_modulus", e), ("shear_modulus", g), ("thickness", l)] {
         match v {
             Some(v) => finite_positive(&format!("{key}.{name}"), v)?,
@@ -63,9 +63,15 @@ pub(super) fn validate(s: &Scene) -> Result<(), SceneError> {
         }
     }
     let j = &s.joints;
+    if !j.group.is_empty() {
+        return Err(SceneError::invalid(
+            "joints.group",
+            "[joints] is every interface not listed in [[interface]]: name a group in an [[interface]] table",
+        ));
+    }
     let any_springs = j.mode == JointMode::Springs || s.interface.iter().any(|i| i.mode == JointMode::Springs);
     if j.mode == JointMode::Springs || (any_springs && (j.normal_modulus.is_some() || j.thickness.is_some())) {
-        stiffness_given("joints", j.normal_modulus, j.shear_modulus, j.thickness)?;
+        stiffness_given("joints", j.moduli(j))?;
     }
     if let Some(st) = &j.strength {
         strength("joints", st)?;
@@ -74,6 +80,9 @@ pub(super) fn validate(s: &Scene) -> Result<(), SceneError> {
         }
     }
     for (i, f) in s.interface.iter().enumerate() {
+        if f.group.is_empty() {
+            return Err(SceneError::invalid(format!("interface[{i}].group"), "missing: the surface physical group"));
+        }
         if let Some(st) = &f.strength {
             strength(&format!("interface[{i}]"), st)?;
             if f.mode == JointMode::Merged {
@@ -84,12 +93,7 @@ pub(super) fn validate(s: &Scene) -> Result<(), SceneError> {
             }
         }
         if f.mode == JointMode::Springs {
-            stiffness_given(
-                &format!("interface[{i}]"),
-                f.normal_modulus.or(j.normal_modulus),
-                f.shear_modulus.or(j.shear_modulus),
-                f.thickness.or(j.thickness),
-            )?;
+            stiffness_given(&format!("interface[{i}]"), f.moduli(j))?;
         }
     }
     for (i, b) in s.boundary.iter().enumerate() {

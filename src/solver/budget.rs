@@ -95,8 +95,25 @@ pub fn response_steps(model: &Model, params: &SolverParams, block_masses: bool) 
     (n.ceil() as usize).max(MIN_STEPS)
 }
 
-/// The step (iteration) budget of a PCG elastic phase: `max_steps`, else
-/// `N_r` with node-block masses, a generous cap (PCG needs tens of iterations).
-pub fn pcg_budget(model: &Model, params: &SolverParams) -> usize {
-    params.max_steps.unwrap_or_else(|| response_steps(model, params, true))
+/// The default budget of phase 2 (and of each strength-reduction trial), in
+/// response times `N_r`. Near the limit the response slows down: on the
+/// stable slope (`SLOPE_SLIP_STABLE`) the trial at F = 1.6357 reached
+/// Equilibrium after 17,967 steps = 4.2 `N_r`; on the block on a plane the
+/// trial at F = 1.2109 (0.16 % below the analytic FS) after 6,050 steps =
+/// 3.0 `N_r` (references/srm.md).
+pub const PHASE2_RESPONSE_TIMES: usize = 10;
+
+/// The step budget of a relaxation, the one formula every phase uses: the
+/// scene's `max_steps` if it gives one, else `response_times` `N_r` with
+/// `params`' damping and node-block masses or not (phase 1: one `N_r`, with
+/// block masses for PCG, where it is a generous cap on the iterations;
+/// phase 2: [`PHASE2_RESPONSE_TIMES`]).
+pub fn step_budget(
+    model: &Model,
+    params: &SolverParams,
+    block_masses: bool,
+    max_steps: Option<usize>,
+    response_times: usize,
+) -> usize {
+    max_steps.unwrap_or_else(|| response_times * response_steps(model, params, block_masses))
 }

@@ -11,11 +11,16 @@ use rayon::prelude::*;
 
 use crate::model::{Model, ELEMENT_SLOT};
 use crate::physics::element::element_force;
-use crate::physics::spring::{breakable_spring_force, relative_displacement, spring_contact_force, SpringState};
+use crate::physics::joint::{JointLaw, JointState};
+use crate::physics::spring::{relative_displacement, spring_contact_force, SpringState};
 
 /// Smallest number of items a rayon task takes (keeps small models cheap).
 const MIN_LEN: usize = 256;
 
+/// Every element writes its force into its slot. Every material law today
+/// condenses ([`MaterialLaw::condenses`](crate::physics::material::MaterialLaw::condenses)):
+/// `f_e = K_e u_e`, the fast path. A law that does not condense gets its own
+/// pass over its elements' tetrahedra here.
 pub fn element_forces(model: &Model, u: &[f64], f_elem: &mut [f64]) {
     let el = &model.elements;
     f_elem.par_chunks_mut(ELEMENT_SLOT).with_min_len(MIN_LEN / 4).enumerate().for_each(|(e, f_e)| {
@@ -33,9 +38,17 @@ pub fn spring_forces(model: &Model, state: &SpringState, u: &[f64], f_spring: &m
     });
 }
 
-/// Failure phase: springs of breakable interfaces also check eq. 17-18 and
-/// update their own slip and status; the others stay elastic.
-pub fn spring_forces_with_failure(model: &Model, state: &mut SpringState, u: &[f64], f_spring: &mut [[f64; 3]]) {
+/// Failure phase: breakable springs (a strength in `joints`) take their
+/// force from the joint `law` (eq. 17-18) and update their own slip and
+/// status; the others stay elastic.
+pub fn spring_forces_with_failure(
+    model: &Model,
+    law: &impl JointLaw,
+    joints: &JointState,
+    state: &mut SpringState,
+    u: &[f64],
+    f_spring: &mut [[f64; 3]],
+) {
     let sp = &model.springs;
     f_spring
         .par_iter_mut()
@@ -45,8 +58,8 @@ pub fn spring_forces_with_failure(model: &Model, state: &mut SpringState, u: &[f
         .enumerate()
         .for_each(|(s, ((f, slip), status))| {
             let d = relative_displacement(u, sp.a[s] as usize, sp.b[s] as usize);
-            *f = match &model.interfaces[sp.interface[s] as usize].strength {
-                Some(st) => breakable_spring_force(sp.kn[s], sp.ks[s], sp.normal[s], d, sp.area[s], st, slip, status),
+            *f = match &joints.strength[s] {
+                Some(st) => law.force(&sp.get(s), d, st, slip, status),
                 None => spring_contact_force(sp.kn[s], sp.ks[s], sp.normal[s], d, *slip, *status),
             };
         });

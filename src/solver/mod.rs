@@ -19,12 +19,14 @@ pub mod inertia;
 pub mod integrate;
 pub mod params;
 pub mod pcg;
+pub mod plan;
 pub mod relax;
 pub mod timestep;
 
 pub use inertia::Inertia;
 pub use params::{DampingKind, ElasticSolver, SolverParams};
 pub use pcg::Pcg;
+pub use plan::PhasePlan;
 pub use relax::{relax, Observer, RunReport, Sliding, StepView, Stop, StopRules};
 
 use serde::Serialize;
@@ -33,6 +35,7 @@ use crate::error::SolveError;
 use crate::model::Model;
 use crate::model::ELEMENT_SLOT;
 use crate::physics::damping::{rayleigh_omega2, rayleigh_omega2_with};
+use crate::physics::joint::{CoulombJoint, JointState};
 use crate::physics::spring::SpringState;
 use block_mass::BlockMass;
 use integrate::{integrate, UpdateInput};
@@ -44,6 +47,8 @@ pub struct State {
     pub v: Vec<f64>,
     pub f_int: Vec<f64>,
     pub springs: SpringState,
+    /// What each spring can carry now (the joint law's strengths).
+    pub joints: JointState,
     pub step: usize,
     pub time: f64,
 }
@@ -56,6 +61,7 @@ impl State {
             v: vec![0.0; n],
             f_int: vec![0.0; n],
             springs: SpringState::new(model.springs.len()),
+            joints: model.joint_state(),
             step: 0,
             time: 0.0,
         }
@@ -99,21 +105,21 @@ pub struct Solver {
 }
 
 impl Solver {
+    /// The solver of phase 1: node-block masses as `params` say
+    /// ([`SolverParams::uses_block_mass`]).
     pub fn new(model: &Model, params: SolverParams) -> Result<Self, SolveError> {
         let block = params.uses_block_mass();
         Self::with_masses(model, params, block)
     }
 
-    /// A solver with node-block masses if `block`, mass scaling is on and the
-    /// damping is not local (Cundall's per-component damping force is not
-    /// dissipative with a dense mass: on the paper's slip-surface case it
-    /// blew up in 464 steps), lumped masses otherwise.
+    /// A solver with node-block masses if `block` and `params` allow them
+    /// ([`SolverParams::block_masses`]), lumped masses otherwise.
     pub fn with_masses(model: &Model, params: SolverParams, block: bool) -> Result<Self, SolveError> {
         let rows = timestep::stiffness_row_sums(model);
         let amplification = if params.damping == DampingKind::Local { 1.0 + params.local_damping } else { 1.0 };
         let (mass, dt) = timestep::masses_and_step(model, &rows, params.safety, params.mass_scaling, amplification)
             .ok_or(SolveError::NoTimeStep)?;
-        let inertia = match block && Self::block_masses_possible(&params) {
+        let inertia = match params.block_masses(block) {
             true => Inertia::block(mass, BlockMass::new(model, amplification / (4.0 * params.safety * params.safety))?),
             false => Inertia::lumped(mass),
         };
@@ -130,11 +136,6 @@ impl Solver {
             partial: vec![integrate::UpdateReport::default(); (3 * model.n_nodes()).div_ceil(integrate::CHUNK)],
             failure: false,
         })
-    }
-
-    /// Whether [`Self::with_masses`] can use node-block masses with `params`.
-    pub fn block_masses_possible(params: &SolverParams) -> bool {
-        params.mass_scaling && params.damping != DampingKind::Local
     }
 
     pub fn params(&self) -> &SolverParams {
@@ -155,20 +156,22 @@ impl Solver {
     /// Relaxes `state` to this solver's own tolerance within its step budget
     /// (`params`), without an observer: [`relax()`] with those rules.
     pub fn relax(&mut self, model: &Model, state: &mut State, history_every: usize) -> Result<RunReport, SolveError> {
-        let rules = StopRules {
-            tolerance: self.params.tolerance,
-            max_steps: self.step_budget(model),
-            sliding: None,
-            history_every,
-        };
+        let rules = StopRules::new(self.params.tolerance, self.step_budget(model), None, history_every);
         relax::relax(self, model, state, &rules, &mut relax::unobserved)
     }
 
-    /// The step budget of a relaxation: `params.max_steps`, or the model's
-    /// characteristic response time ([`budget::response_steps`]) with this
+    /// The step budget of one relaxation ([`budget::step_budget`]):
+    /// `params.max_steps`, or one characteristic response time with this
     /// solver's damping and masses.
     pub fn step_budget(&self, model: &Model) -> usize {
-        self.params.max_steps.unwrap_or_else(|| budget::response_steps(model, &self.params, self.inertia.is_block()))
+        budget::step_budget(model, &self.params, self.inertia.is_block(), self.params.max_steps, 1)
+    }
+
+    /// Forgets the adaptive damping state, so that the next relaxation
+    /// starts as with a new solver (masses and step are kept).
+    pub fn restart(&mut self) {
+        self.viscous_c = 0.0;
+        self.last_kinetic = 0.0;
     }
 
     pub fn inertia(&self) -> &Inertia {
@@ -180,7 +183,7 @@ impl Solver {
     /// masses are kept: node-block masses stay stable when springs fail
     /// (see [`block_mass`]).
     pub fn set_failure(&mut self, model: &Model, on: bool) {
-        self.failure = on && model.interfaces.iter().any(|i| i.strength.is_some());
+        self.failure = on && model.has_breakable_interface();
     }
 
     /// Kinetic energy `v . M v / 2` with the inertial masses (J).
@@ -193,7 +196,15 @@ impl Solver {
     pub fn internal_forces(&mut self, model: &Model, state: &mut State) {
         forces::element_forces(model, &state.u, &mut self.f_elem);
         if self.failure {
-            forces::spring_forces_with_failure(model, &mut state.springs, &state.u, &mut self.f_spring);
+            let law = &CoulombJoint;
+            forces::spring_forces_with_failure(
+                model,
+                law,
+                &state.joints,
+                &mut state.springs,
+                &state.u,
+                &mut self.f_spring,
+            );
         } else {
             forces::spring_forces(model, &state.springs, &state.u, &mut self.f_spring);
         }
@@ -307,8 +318,7 @@ impl Solver {
 impl HistoryRow {
     /// The row of `state` with the given kinetic energy and ratio.
     pub fn of(model: &Model, state: &State, kinetic: f64, ratio: f64) -> Self {
-        let max_displacement =
-            state.u.chunks(3).map(|d| (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()).fold(0.0, f64::max);
+        let max_displacement = crate::summary::max_displacement(&state.u);
         HistoryRow {
             step: state.step,
             time: state.time,

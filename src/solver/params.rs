@@ -51,9 +51,10 @@ pub struct SolverParams {
     /// With mass scaling, scale the mass by one dense block per mesh node
     /// (all its copies; see [`crate::solver::block_mass`]) instead of one
     /// number per copy, so that stiff joint springs no longer set the step
-    /// count. Elastic phase only (the failure phase goes back to lumped
-    /// masses); needs `mass_scaling` and `viscous` damping. Default: on
-    /// when those two are (on the paper slope it converges in 14x fewer
+    /// count. This key is phase 1's (dynamic relaxation); phase 2 has its
+    /// own (`[failure] block_mass`, default true). Either needs
+    /// [`Self::block_masses`]: mass scaling and viscous damping. Default: on
+    /// when they allow it (on the paper slope it converges in 14x fewer
     /// steps, references/performance.md).
     pub block_mass: Option<bool>,
     /// Convergence: `max |f_unbal| / max |f_ext|` below this. Default 1e-5.
@@ -86,13 +87,19 @@ impl Default for SolverParams {
 }
 
 impl SolverParams {
-    fn block_mass_possible(&self) -> bool {
-        self.mass_scaling && self.damping == DampingKind::Viscous
+    /// The one rule for node-block masses, in both phases: a phase that
+    /// asks for them (`wanted`) gets them when mass scaling is on and the
+    /// damping is viscous. Local damping is not dissipative with a dense
+    /// mass (Cundall's per-component damping force: on the paper's
+    /// slip-surface case it blew up in 464 steps), and neither are kinetic
+    /// resets (the column blew up at step 272, tests/solver_errors.rs).
+    pub fn block_masses(&self, wanted: bool) -> bool {
+        wanted && self.mass_scaling && self.damping == DampingKind::Viscous
     }
 
-    /// Whether the elastic phase uses node-block masses.
+    /// Whether the elastic phase (dynamic relaxation) uses node-block masses.
     pub fn uses_block_mass(&self) -> bool {
-        self.block_mass.unwrap_or(true) && self.block_mass_possible()
+        self.block_masses(self.block_mass.unwrap_or(true))
     }
 
     pub fn validate(&self) -> Result<(), SceneError> {
@@ -106,7 +113,7 @@ impl SolverParams {
         if !(self.tolerance > 0.0 && self.tolerance.is_finite()) {
             return bad("tolerance", format!("must be a finite positive number, got {}", self.tolerance));
         }
-        if self.block_mass == Some(true) && !self.block_mass_possible() {
+        if self.block_mass == Some(true) && !self.block_masses(true) {
             return bad("block_mass", "needs mass_scaling = true and damping = \"viscous\"".into());
         }
         if self.max_steps == Some(0) {

@@ -24,6 +24,8 @@ use serde::Serialize;
 use super::{HistoryRow, Solver, State};
 use crate::error::SolveError;
 use crate::model::Model;
+use crate::summary::distances;
+pub use crate::summary::max_displacement_since;
 
 /// Why a relaxation stopped.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -74,8 +76,8 @@ impl Sliding<'_> {
     /// Weighted mean displacement of `u` since the reference (m).
     pub fn mean_displacement(&self, u: &[f64]) -> f64 {
         let (mut sum, mut weight) = (0.0, 0.0);
-        for ((a, b), w) in u.chunks(3).zip(self.reference.chunks(3)).zip(self.weights) {
-            sum += w * ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt();
+        for (d, w) in distances(u, self.reference).zip(self.weights) {
+            sum += w * d;
             weight += w;
         }
         if weight > 0.0 {
@@ -114,6 +116,13 @@ pub struct StopRules<'a> {
     pub sliding: Option<Sliding<'a>>,
     /// A history row every this many (global) steps, and at the stop.
     pub history_every: usize,
+}
+
+impl<'a> StopRules<'a> {
+    /// The rules of one relaxation (the one constructor the drivers use).
+    pub fn new(tolerance: f64, max_steps: usize, sliding: Option<Sliding<'a>>, history_every: usize) -> Self {
+        Self { tolerance, max_steps, sliding, history_every }
+    }
 }
 
 /// What one step looked like, for the observer.
@@ -156,14 +165,6 @@ pub struct RunReport {
     /// The ratio at the last step.
     pub unbalanced_ratio: f64,
     pub history: Vec<HistoryRow>,
-}
-
-/// Largest nodal displacement of `u` since `u0` (m).
-pub fn max_displacement_since(u: &[f64], u0: &[f64]) -> f64 {
-    u.chunks(3)
-        .zip(u0.chunks(3))
-        .map(|(a, b)| ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt())
-        .fold(0.0, f64::max)
 }
 
 /// Rule 1: the ratio is below the tolerance and the kinetic energy is not

@@ -21,8 +21,8 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use crate::drivers::run::Watch;
 use crate::drivers::srm::{run_srm, Reduction, SrmProgress};
+use crate::drivers::Watch;
 use crate::error::Error;
 use crate::harness::registry;
 use crate::model::spec::Softening;

@@ -41,6 +41,7 @@ pub mod failure;
 pub mod headline;
 pub mod memory;
 pub mod pyslope;
+pub mod rows;
 pub mod scaling;
 pub mod stream;
 pub mod tables;

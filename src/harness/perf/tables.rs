@@ -19,7 +19,6 @@ use super::scaling::{exponents, ScalingRow};
 use crate::error::Error;
 use crate::harness::registry as reg;
 use crate::harness::report::{Check, Table};
-use crate::harness::validation;
 
 impl Headline {
     /// The figures as a Markdown table, each with its goal.
@@ -250,17 +249,17 @@ pub struct EnsembleCsvRow {
 /// The validation rows `perf/*` of a `cdem perf` run: the headline's, phase
 /// 2's, the strength reductions' and the ensembles' (skipped if not run).
 pub fn perf_checks(head: &Headline, failure: &FailureFigures, ensemble: Option<&EnsembleFigures>) -> Vec<Check> {
-    let mut rows = validation::perf_rows(head);
-    rows.extend(validation::phase2_rows(&failure.phase2));
+    let mut rows = crate::harness::perf::rows::perf_rows(head);
+    rows.extend(crate::harness::perf::rows::phase2_rows(&failure.phase2));
     if failure.srm.is_empty() {
-        rows.extend(validation::srm_perf_skipped("not run: cdem perf --no-srm"));
+        rows.extend(crate::harness::perf::rows::srm_perf_skipped("not run: cdem perf --no-srm"));
     }
     for f in &failure.srm {
-        rows.extend(validation::srm_perf_rows(f));
+        rows.extend(crate::harness::perf::rows::srm_perf_rows(f));
     }
     match ensemble {
-        Some(e) => rows.extend(validation::ensemble_perf_rows(e)),
-        None => rows.extend(validation::ensemble_perf_skipped("not run: cdem perf --no-ensemble")),
+        Some(e) => rows.extend(crate::harness::perf::rows::ensemble_perf_rows(e)),
+        None => rows.extend(crate::harness::perf::rows::ensemble_perf_skipped("not run: cdem perf --no-ensemble")),
     }
     rows
 }

@@ -105,12 +105,8 @@ pub fn time_pcg(model: &Model, params: &SolverParams) -> Result<PcgFigure, Error
     let mut pcg = Pcg::new(model)?;
     let setup_s = t.elapsed().as_secs_f64();
     let mut state = State::new(model);
-    let rules = StopRules {
-        tolerance: params.tolerance,
-        max_steps: crate::solver::budget::pcg_budget(model, params),
-        sliding: None,
-        history_every: usize::MAX,
-    };
+    let budget = crate::solver::budget::step_budget(model, params, true, params.max_steps, 1);
+    let rules = StopRules::new(params.tolerance, budget, None, usize::MAX);
     let report = pcg.solve(model, &mut state, &rules, &mut unobserved)?;
     let seconds = t.elapsed().as_secs_f64();
     let max_abs_uz = state.u.chunks(3).map(|d| d[2].abs()).fold(0.0, f64::max);

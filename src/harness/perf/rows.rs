@@ -1,0 +1,189 @@
+//! The rows of the performance goals (references/performance.md) that
+//! `cdem perf`, `cdem reproduce` and the tests report: every timed figure
+//! against its goal, measured side by side in one run.
+
+use crate::harness::perf::ensemble::EnsembleFigures;
+use crate::harness::perf::failure::{Phase2Figure, Phase2Run, SrmFigure};
+use crate::harness::perf::headline::Headline;
+use crate::harness::registry::{self as reg, row};
+use crate::harness::report::Check;
+
+/// The performance goals (references/performance.md), reported.
+pub fn perf_rows(h: &Headline) -> Vec<Check> {
+    let mut rows = vec![
+        row("perf/bandwidth").value(h.step_fraction_of_stream(), 0.5, h.step_block.step_s),
+        row("perf/dr-over-fem").value(h.dr_over_fem(), 3.0, h.dr_block.seconds),
+        row("perf/pcg-over-fem").value(h.pcg_over_fem(), 3.0, h.pcg.seconds),
+    ];
+    for (case, ours, pyslope) in &h.lem {
+        let id = format!("perf/lem/{case}");
+        let spec = crate::harness::registry::rows().into_iter().find(|r| r.id == id);
+        let c = match spec {
+            Some(s) => s.value(pyslope / ours, 100.0, *ours),
+            None => Check::new(
+                &format!("performance: LEM grid, {case}"),
+                "pySlope / ours time",
+                pyslope / ours,
+                100.0,
+                f64::NAN,
+                reg::PERFORMANCE_MD,
+                *ours,
+            ),
+        };
+        rows.push(c.with_note(if h.pyslope_timed_now {
+            "pySlope timed in this run"
+        } else {
+            "pySlope's time recorded in references/pyslope.json, not timed in this run"
+        }));
+    }
+    rows
+}
+
+/// Phase 2 of the slip-surface slope, node-block against lumped masses in
+/// one run ([`crate::harness::perf::failure::phase2_figure`]): the steps to a
+/// decision against the goal and the paper-era baseline, and their ratio. A
+/// phase 2 that ran to its step cap has no decision: its rows carry a defect.
+pub fn phase2_rows(f: &Phase2Figure) -> Vec<Check> {
+    let (b, l) = (&f.block, &f.lumped);
+    let checked = |c: Check, runs: &[&Phase2Run]| match runs.iter().find(|r| !r.decided()) {
+        Some(r) => c.with_defect(format!(
+            "phase 2 with {} masses ran to its step cap ({} steps) without a decision",
+            if r.block_mass { "node-block" } else { "lumped" },
+            r.steps
+        )),
+        None => c,
+    };
+    vec![
+        checked(row("perf/phase2/block-steps").value(b.steps as f64, reg::GOAL_PHASE2_STEPS, b.seconds), &[b])
+            .with_note(format!("{:?}; lumped masses {} steps in this run", b.end, l.steps)),
+        checked(row("perf/phase2/lumped-steps").value(l.steps as f64, reg::PHASE2_STEPS_BASELINE, l.seconds), &[l])
+            .with_note(format!("{:?}; the baseline was decided by the 0.5 m bound, before the rate rule", l.end)),
+        checked(row("perf/phase2/lumped-over-block").value(f.lumped_over_block(), 1.0, b.seconds + l.seconds), &[b, l])
+            .with_note(format!("{} / {} steps", l.steps, b.steps)),
+    ]
+}
+
+/// The ids of the rows of one timed strength reduction (`variant` of
+/// [`crate::harness::perf::failure::SRM_VARIANTS`]): wall time, mean and
+/// largest steps per trial.
+pub fn srm_perf_ids(variant: &str) -> [String; 3] {
+    ["wall", "trial-steps-mean", "trial-steps-max"].map(|q| format!("perf/srm/{variant}/{q}"))
+}
+
+/// `cdem srm` on the slip-surface slope ([`crate::harness::perf::failure::srm_figure`]):
+/// its wall time against the goal, the mean and largest steps per trial
+/// against 3DEC's default cap. A search without a bracket carries a defect.
+pub fn srm_perf_rows(f: &SrmFigure) -> Vec<Check> {
+    let [wall, mean, max] = srm_perf_ids(&f.variant);
+    let cap = reg::THREEDEC_TRIAL_STEP_CAP;
+    let budget =
+        format!("{} trials, {} ran to their budget of {} steps (10 N_r)", f.trials, f.undecided, f.trial_budget);
+    let rows = vec![
+        row(&wall).value(f.seconds, reg::GOAL_SRM_SECONDS, f.seconds).with_note(format!(
+            "FS {}; {budget}",
+            f.fs.map_or("none (no bracket)".to_string(), |fs| format!("{fs:.3}"))
+        )),
+        row(&mean)
+            .value(f.mean_trial_steps, cap, f.seconds)
+            .with_note(format!("{:.2} of the cap; {budget}", f.mean_trial_steps / cap)),
+        row(&max).value(f.max_trial_steps as f64, cap, f.seconds).with_note(format!(
+            "{:.2} of the cap; our budget {} steps is {} it",
+            f.max_trial_steps as f64 / cap,
+            f.trial_budget,
+            if (f.trial_budget as f64) < cap { "below" } else { "not below" }
+        )),
+    ];
+    match f.fs {
+        Some(_) => rows,
+        None => rows.into_iter().map(|c| c.with_defect("the search found no bracket")).collect(),
+    }
+}
+
+/// The rows of the timed strength reductions as skipped, with the reason
+/// (they take 10-90 s each: `cdem perf` measures them, the tests and
+/// `cdem reproduce` do not).
+pub fn srm_perf_skipped(reason: &str) -> Vec<Check> {
+    crate::harness::perf::failure::SRM_VARIANTS
+        .iter()
+        .flat_map(|(variant, _)| srm_perf_ids(variant))
+        .map(|id| row(&id).skipped(reason))
+        .collect()
+}
+
+/// The ids of the timed ensemble rows ([`ensemble_perf_rows`]).
+pub const ENSEMBLE_PERF_IDS: [&str; 3] =
+    ["perf/ensemble/members-per-hour", "perf/ensemble/srm-members-per-hour", "perf/ensemble/two-shards-speedup"];
+
+/// Ensembles of the slip-surface slope ([`crate::harness::perf::ensemble`]):
+/// members per hour without and with strength reduction, against the
+/// issue's goal of 100 with SRM, and the speed-up of two concurrent shards
+/// over one process. Merged shards that are not byte-identical to the one
+/// process's `members.jsonl` carry a defect, as SRM members without an FS do.
+pub fn ensemble_perf_rows(f: &EnsembleFigures) -> Vec<Check> {
+    let [members, srm, shards] = ENSEMBLE_PERF_IDS;
+    let goal = reg::GOAL_SRM_MEMBERS_PER_HOUR;
+    let (m, s, sh) = (&f.members, &f.srm, &f.shards);
+    let ends = |m: &crate::harness::perf::ensemble::MembersFigure| {
+        format!("phase 2: {} GlobalSliding, {} Equilibrium, {} Undecided", m.sliding, m.equilibrium, m.undecided)
+    };
+    let k = |m: &crate::harness::perf::ensemble::MembersFigure| m.mean_k.map_or("none".into(), |k| format!("{k:.3}"));
+    let load = |l: Option<f64>| l.map_or("unknown".into(), |l| format!("{l:.2}"));
+    let srm_row = row(srm).value(s.members_per_hour, goal, s.seconds).with_note(format!(
+        "{} members in {:.1} s on {} threads ({:.1} s each); mean SRM FS {}, {:.1} trials; mean K {}; {}",
+        s.members,
+        s.seconds,
+        s.threads,
+        s.seconds / s.members as f64,
+        s.mean_srm_fs.map_or("none".into(), |v| format!("{v:.3}")),
+        s.mean_srm_trials.unwrap_or(f64::NAN),
+        k(s),
+        ends(s)
+    ));
+    let srm_row = match s.members_without_srm_fs {
+        0 => srm_row,
+        n => srm_row.with_defect(format!("{n} members' strength reduction found no bracket")),
+    };
+    let shards_row =
+        row(shards).value(sh.speedup(), reg::GOAL_TWO_SHARDS_SPEEDUP, sh.one_process_s).with_note(format!(
+            "{} members: one process {:.1} s on {} threads ({:.1} s on 1: threads gain {:.2}x); 2 shards ({} \
+             thread(s) each) {:.1} s + merge {:.2} s, {:.2}x the one process on 1 thread; members.jsonl {} ({} \
+             bytes); load average {} before, {} after",
+            sh.members,
+            sh.one_process_s,
+            sh.threads,
+            sh.one_thread_s,
+            sh.thread_speedup(),
+            sh.threads_per_shard,
+            sh.shards_s,
+            sh.merge_s,
+            sh.speedup_over_one_thread(),
+            if sh.identical { "byte-identical" } else { "DIFFERENT" },
+            sh.jsonl_bytes,
+            load(sh.load_before),
+            load(sh.load_after)
+        ));
+    let shards_row = match sh.identical {
+        true => shards_row,
+        false => {
+            shards_row.with_defect("members.jsonl differs between the one process, one thread and the merged shards")
+        }
+    };
+    vec![
+        row(members).value(m.members_per_hour, goal, m.seconds).with_note(format!(
+            "{} members in {:.1} s on {} threads ({:.2} s each); mean K {}; {}",
+            m.members,
+            m.seconds,
+            m.threads,
+            m.seconds / m.members as f64,
+            k(m),
+            ends(m)
+        )),
+        srm_row,
+        shards_row,
+    ]
+}
+
+/// The timed ensemble rows as skipped, with the reason.
+pub fn ensemble_perf_skipped(reason: &str) -> Vec<Check> {
+    ENSEMBLE_PERF_IDS.iter().map(|id| row(id).skipped(reason)).collect()
+}
