@@ -8,20 +8,20 @@
 //! - [`lem`]: the LEM input of a LEM file or of a scene's `[lem]` table;
 //! - [`ensemble`]: Monte-Carlo members of a scene or LEM file, and their statistics;
 //! - [`srm`]: strength reduction, the factor of safety (`cdem srm`);
-//! - [`surface`]: the scene's `[analysis]`, eq. 21/22 on its slip circle.
+//! - [`analysis`]: the scene's `[analysis]`, eq. 21/22 on its slip circle.
 
+pub mod analysis;
 pub mod ensemble;
 pub mod failure;
 pub mod fem;
 pub mod lem;
 pub mod run;
 pub mod srm;
-pub mod surface;
 
 pub use crate::summary::EndState;
+pub use analysis::{run_analysis, AnalysisReport};
 pub use failure::{FailureResult, Stage, StageSnapshots};
 pub use fem::{run_fem, solve_scene as solve_fem, FemRun};
 pub use lem::{load_lem_input, scene_lem_input};
 pub use run::{build_model, read_mesh, run_scene, run_watched, Frame, Phase, Progress, RunResult, Watch};
 pub use srm::{run_srm, SrmProgress, SrmResult, Trial};
-pub use surface::{surface_analysis, SurfaceReport};
