@@ -252,11 +252,8 @@ fn search_is_deterministic_and_independent_of_threads() {
         for m in Method::ALL {
             let (x, y) = (critical(&a, m), critical(r, m));
             assert_eq!(x.fs.to_bits(), y.fs.to_bits(), "{m:?}");
-            assert_eq!(
-                [x.circle.xc, x.circle.zc, x.circle.r].map(f64::to_bits),
-                [y.circle.xc, y.circle.zc, y.circle.r].map(f64::to_bits),
-                "{m:?}"
-            );
+            let bits = |c: Circle| [c.xc, c.zc, c.r].map(f64::to_bits);
+            assert_eq!(bits(x.circle), bits(y.circle), "{m:?}");
         }
         assert_eq!(a.circles_evaluated, r.circles_evaluated);
     }

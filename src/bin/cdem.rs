@@ -354,17 +354,10 @@ fn print_surface(r: &cdem::drivers::AnalysisReport) {
             .collect::<Vec<_>>()
             .join(", ")
     };
-    let lem = r.lem_fs.map_or(String::new(), |f| format!(", LEM Bishop FS {f:.3}"));
+    let (lem, c) = (r.lem_fs.map_or(String::new(), |f| format!(", LEM Bishop FS {f:.3}")), r.arc.circle);
     println!(
         "eq. 21 on the circle ({}{lem}; centre ({:.3}, {:.3}) m, r {:.3} m, toe ({:.2}, {:.2}) m, arc {:.2} m), {}:",
-        r.circle_from,
-        r.arc.circle.xc,
-        r.arc.circle.zc,
-        r.arc.circle.r,
-        r.arc.toe[0],
-        r.arc.toe[1],
-        r.arc.length,
-        r.state
+        r.circle_from, c.xc, c.zc, c.r, r.arc.toe[0], r.arc.toe[1], r.arc.length, r.state
     );
     println!(
         "  K = {:.4} from element stresses; K_i sign segments from the toe: {}",
