@@ -27,11 +27,12 @@
 
 // The layers, bottom up; a module imports only from layers below its own
 // (tests/layering.rs checks it):
-//   error, summary -> mesh -> physics -> model -> solver | fem | lem | analysis
+//   error, summary -> mesh, geometry -> physics -> model -> solver | fem | lem | analysis
 //   -> scene -> drivers -> output -> harness (feature `harness`) -> the CLI.
 pub mod error;
 pub mod summary;
 
+pub mod geometry;
 pub mod mesh;
 pub mod physics;
 

@@ -4,7 +4,7 @@
 //! | layer | modules |
 //! |---|---|
 //! | 0 | `error`, `summary` (vocabulary every layer shares) |
-//! | 1 | `mesh` |
+//! | 1 | `mesh`, `geometry` (the one circle type) |
 //! | 2 | `physics` |
 //! | 3 | `model` |
 //! | 4 | `solver`, `fem`, `lem`, `analysis` (beside each other: none imports another) |
@@ -20,10 +20,11 @@
 
 use std::path::{Path, PathBuf};
 
-const LAYERS: [(&str, u32); 13] = [
+const LAYERS: [(&str, u32); 14] = [
     ("error", 0),
     ("summary", 0),
     ("mesh", 1),
+    ("geometry", 1),
     ("physics", 2),
     ("model", 3),
     ("solver", 4),

@@ -51,10 +51,13 @@ fn acads_1a_bishop_agrees_with_slide_and_the_referee() {
     let r = analyse(&load(reg::LEM_ACADS_1A)).unwrap();
     let c = critical(&r, Method::Bishop);
     let (lo, hi) = both_bands(ACADS_SLIDE_BISHOP, ACADS_REFEREE);
-    println!("ACADS 1(a) Bishop {:.5} in [{lo:.5}, {hi:.5}]? circle ({:.3}, {:.3}, {:.3})", c.fs, c.xc, c.zc, c.r);
+    println!(
+        "ACADS 1(a) Bishop {:.5} in [{lo:.5}, {hi:.5}]? circle ({:.3}, {:.3}, {:.3})",
+        c.fs, c.circle.xc, c.circle.zc, c.circle.r
+    );
     assert!(c.fs >= lo && c.fs <= hi, "Bishop FS {} outside [{lo}, {hi}]", c.fs);
     // The critical circle stays above the base z = 20 of the problem.
-    assert!(c.zc - c.r >= 20.0 - 1e-9 || c.xc < c.exit[0] || c.xc > c.entry[0]);
+    assert!(c.circle.zc - c.circle.r >= 20.0 - 1e-9 || c.circle.xc < c.exit[0] || c.circle.xc > c.entry[0]);
 }
 
 /// Spencer on ACADS 1(a): measured 0.9841 (converged in slice count), 0.2 %
@@ -107,12 +110,18 @@ fn acads_1a_method_ordering_is_textbook() {
 fn paper_slope_bishop_matches_the_papers_lem() {
     let r = analyse(&load(reg::LEM_PAPER_SLOPE)).unwrap();
     let c = critical(&r, Method::Bishop);
-    println!("paper slope Bishop {:.4} (paper 1.084), circle ({:.3}, {:.3}, {:.3})", c.fs, c.xc, c.zc, c.r);
+    println!(
+        "paper slope Bishop {:.4} (paper 1.084), circle ({:.3}, {:.3}, {:.3})",
+        c.fs, c.circle.xc, c.circle.zc, c.circle.r
+    );
     cdem::harness::report::record("lem_paper_slope", &[cdem::harness::validation::paper_lem_row(&r)]);
     assert!((c.fs - PAPER_LEM_FS).abs() <= reg::TOL_PAPER_LEM_FS_ABSOLUTE, "Bishop FS {}", c.fs);
     for m in Method::ALL {
         let c = critical(&r, m);
-        assert!(c.zc - c.r >= -1e-9 || c.xc < c.exit[0] || c.xc > c.entry[0], "{m:?} circle below z = 0");
+        assert!(
+            c.circle.zc - c.circle.r >= -1e-9 || c.circle.xc < c.exit[0] || c.circle.xc > c.entry[0],
+            "{m:?} circle below z = 0"
+        );
     }
 }
 
@@ -243,7 +252,8 @@ fn search_is_deterministic_and_independent_of_threads() {
         for m in Method::ALL {
             let (x, y) = (critical(&a, m), critical(r, m));
             assert_eq!(x.fs.to_bits(), y.fs.to_bits(), "{m:?}");
-            assert_eq!([x.xc, x.zc, x.r].map(f64::to_bits), [y.xc, y.zc, y.r].map(f64::to_bits), "{m:?}");
+            let bits = |c: Circle| [c.xc, c.zc, c.r].map(f64::to_bits);
+            assert_eq!(bits(x.circle), bits(y.circle), "{m:?}");
         }
         assert_eq!(a.circles_evaluated, r.circles_evaluated);
     }
@@ -264,7 +274,7 @@ fn mirrored_section_gives_the_mirrored_answer() {
     for m in Method::ALL {
         let (x, y) = (critical(&a, m), critical(&b, m));
         assert!((x.fs - y.fs).abs() < 1e-6, "{m:?}: {} vs {}", x.fs, y.fs);
-        assert!((x.xc - (90.0 - y.xc)).abs() < 1e-2 && (x.zc - y.zc).abs() < 1e-2, "{m:?}");
+        assert!((x.circle.xc - (90.0 - y.circle.xc)).abs() < 1e-2 && (x.circle.zc - y.circle.zc).abs() < 1e-2, "{m:?}");
         assert!((x.exit[0] - (90.0 - y.exit[0])).abs() < 1e-2);
     }
 }
@@ -360,11 +370,15 @@ fn a_base_at_toe_level_is_allowed_and_matches_taylors_chart() {
     let r = analyse(&parse(&text).unwrap()).unwrap();
     let b = critical(&r, Method::Bishop);
     let expected = c / (reg::TAYLOR_N_60.value * gamma * h);
-    println!("Taylor 60 deg: Bishop {:.4}, chart {expected:.4}, circle ({:.3}, {:.3}, {:.3})", b.fs, b.xc, b.zc, b.r);
+    println!(
+        "Taylor 60 deg: Bishop {:.4}, chart {expected:.4}, circle ({:.3}, {:.3}, {:.3})",
+        b.fs, b.circle.xc, b.circle.zc, b.circle.r
+    );
     cdem::harness::report::record("lem_taylor_toe_level", &[reg::row("lem/taylor-60").value(b.fs, expected, r.wall_s)]);
     assert!((b.fs - expected).abs() <= reg::TOL_TAYLOR * expected, "Bishop {} against Taylor {expected}", b.fs);
     // The search's admissibility tolerance: 1e-9 (1 + r + |zc|).
-    assert!(b.zc - b.r >= -1e-9 * (1.0 + b.r + b.zc.abs()), "the circle passes {} m below the base", b.r - b.zc);
+    let Circle { zc, r: radius, .. } = b.circle;
+    assert!(zc - radius >= -1e-9 * (1.0 + radius + zc.abs()), "the circle passes {} m below the base", radius - zc);
     // The level z_min may equal the lowest ground point, not lie above it.
     let above = text.replace("z_min = 0.0", "z_min = 0.5");
     assert!(

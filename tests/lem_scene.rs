@@ -83,8 +83,7 @@ fn zones_of_almost_one_strength_give_the_homogeneous_factor_of_safety() {
     assert_eq!(zoned.section.zones().len(), 2);
     // On the homogeneous critical circle, with slices fine enough that the
     // zoned weights (columns at slice centres) equal the exact areas.
-    let c = *analyse(&homogeneous).unwrap().critical.get(Method::Bishop).unwrap();
-    let circle = cdem::lem::Circle { xc: c.xc, zc: c.zc, r: c.r };
+    let circle = analyse(&homogeneous).unwrap().critical.get(Method::Bishop).unwrap().circle;
     let (a, b) = (
         evaluate_circle(&homogeneous.section, circle, 400).unwrap(),
         evaluate_circle(&zoned.section, circle, 400).unwrap(),

@@ -16,7 +16,6 @@ use cdem::harness::figures::{line_plot, section_contour, Scale, Series};
 use cdem::harness::registry::{self as reg, MIN_SEGMENT, PAPER_EQ21_K, PAPER_LEM_FS, SLIP_CIRCLE};
 use cdem::harness::section::element_mean_displacement;
 use cdem::lem::evaluate_circle;
-use cdem::lem::Circle;
 
 fn segments(p: &[SurfacePoint], k_i: &[f64]) -> Vec<Segment> {
     let s: Vec<f64> = p.iter().map(|q| q.s).collect();
@@ -29,10 +28,9 @@ fn describe(seg: &[Segment]) -> Vec<String> {
 
 #[test]
 fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
-    let r = reg::slip_circle_radius();
     let lem = reg::LEM_PAPER_SLOPE.lem_input().unwrap();
     let circle = SLIP_CIRCLE;
-    let fs_lem = evaluate_circle(&lem.section, Circle { xc: circle.xc, zc: circle.zc, r }, 50).unwrap().bishop.unwrap();
+    let fs_lem = evaluate_circle(&lem.section, circle.circle, 50).unwrap().bishop.unwrap();
 
     // Phase 1 only: eq. 21 is taken on the elastic state.
     let scene = reg::SLOPE_SLIP.elastic_scene().unwrap();

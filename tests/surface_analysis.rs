@@ -70,14 +70,15 @@ fn eq21_on_circles_no_face_follows_against_the_closed_form_and_the_lem() {
     let lem = slope.lem_fs.unwrap();
     println!(
         "paper slope, critical circle ({:.3}, {:.3}) r {:.3}: K CDEM {:.4}, FEM {:.4}, LEM Bishop {lem:.4}",
-        slope.arc.xc, slope.arc.zc, slope.arc.r, slope.stresses.k, slope_fem.stresses.k
+        slope.arc.circle.xc, slope.arc.circle.zc, slope.arc.circle.r, slope.stresses.k, slope_fem.stresses.k
     );
     assert_eq!(slope.circle_from, "lem critical (Bishop)");
     // The search finds the registry's critical circle.
-    assert!((slope.arc.xc - reg::SLIP_CIRCLE.xc).abs() < 0.01 && (slope.arc.zc - reg::SLIP_CIRCLE.zc).abs() < 0.01);
+    let (arc, slip) = (slope.arc.circle, reg::SLIP_CIRCLE.circle);
+    assert!((arc.xc - slip.xc).abs() < 0.01 && (arc.zc - slip.zc).abs() < 0.01);
     assert!(rel(slope.stresses.k, slope_fem.stresses.k) < reg::TOL_EQ21_CDEM_VS_FEM);
     // Reported, not asserted (references/analysis.md): the row shows whether it is met.
-    let seg = |r: &cdem::drivers::SurfaceReport| r.stresses.segments.iter().map(|g| g.sign).collect::<Vec<_>>();
+    let seg = |r: &cdem::drivers::AnalysisReport| r.stresses.segments.iter().map(|g| g.sign).collect::<Vec<_>>();
     assert_eq!(seg(slope), seg(slope_fem), "CDEM and FEM give the same sign segments");
 }
 

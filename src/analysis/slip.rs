@@ -1,11 +1,12 @@
 //! Sampling a circular slip surface of a conforming mesh (the interface group
 //! that follows the LEM critical circle) for eq. 19-22.
 //!
-//! Geometry in the x-z section: centre `(xc, zc)`, the toe (exit) point, the
-//! sliding direction toward the toe. At a point `x` of the surface the normal
-//! out of the sliding mass points away from the centre (the mass lies inside
-//! the circle, between it and the ground), `t` is the tangent pointing toward
-//! the toe, and `s` the arc length from the toe.
+//! Geometry in the x-z section: the circle (centre `(xc, zc)`), the toe
+//! (exit) point, the sliding direction toward the toe. At a point `x` of the
+//! surface the normal out of the sliding mass points away from the centre
+//! (the mass lies inside the circle, between it and the ground), `t` is the
+//! tangent pointing toward the toe, and `s` the arc length from the toe; the
+//! radius there is the point's distance from the centre.
 //!
 //! Two sources of traction:
 //! - stresses: per slip facet, the average of the two cells that share it
@@ -19,16 +20,17 @@
 use std::collections::HashMap;
 
 use super::safety::{traction_from_stress, SurfacePoint};
+use crate::geometry::Circle;
 use crate::mesh::adjacency::{face_key, face_nodes, polygon_normal_area, FaceAdjacency};
 use crate::mesh::Mesh;
 use crate::model::Model;
 use crate::physics::spring::{relative_displacement, spring_contact_force, SpringState};
 
-/// A circular slip surface in the x-z section.
+/// A circular slip surface in the x-z section: a circle with the point
+/// and the sense the mass slides toward.
 #[derive(Debug, Clone, Copy)]
 pub struct SlipCircle {
-    pub xc: f64,
-    pub zc: f64,
+    pub circle: Circle,
     /// The toe (exit) point (x, z).
     pub toe: [f64; 2],
     /// Whether the mass turns clockwise (x right, z up) as it slides toward
@@ -51,13 +53,14 @@ impl SlipCircle {
     /// it), unit normal out of the mass, unit tangent in the sliding
     /// direction (toward the toe).
     pub fn frame(&self, x: [f64; 3]) -> (f64, [f64; 3], [f64; 3]) {
-        let (dx, dz) = (x[0] - self.xc, x[2] - self.zc);
+        let Circle { xc, zc, .. } = self.circle;
+        let (dx, dz) = (x[0] - xc, x[2] - zc);
         let r = dx.hypot(dz);
         let n = [dx / r, 0.0, dz / r];
         let cw = self.clockwise;
         // d(position)/d(angle) is (-n_z, n_x); clockwise motion is its opposite.
         let t = if cw { [n[2], 0.0, -n[0]] } else { [-n[2], 0.0, n[0]] };
-        let a_t = (self.toe[1] - self.zc).atan2(self.toe[0] - self.xc);
+        let a_t = (self.toe[1] - zc).atan2(self.toe[0] - xc);
         // From the toe toward the crest the angle grows when sliding is clockwise.
         let from_toe = wrap(dz.atan2(dx) - a_t);
         (r * if cw { from_toe } else { -from_toe }, n, t)

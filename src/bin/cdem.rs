@@ -346,18 +346,18 @@ fn run(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
 }
 
 /// One line per traction source of the scene's `[analysis]`.
-fn print_surface(r: &cdem::drivers::SurfaceReport) {
-    let segments = |f: &cdem::drivers::surface::Factors| {
+fn print_surface(r: &cdem::drivers::AnalysisReport) {
+    let segments = |f: &cdem::drivers::analysis::Factors| {
         f.segments
             .iter()
             .map(|g| format!("{} {:.1}-{:.1} m", if g.sign > 0 { "+" } else { "-" }, g.s0.max(0.0), g.s1))
             .collect::<Vec<_>>()
             .join(", ")
     };
-    let lem = r.lem_fs.map_or(String::new(), |f| format!(", LEM Bishop FS {f:.3}"));
+    let (lem, c) = (r.lem_fs.map_or(String::new(), |f| format!(", LEM Bishop FS {f:.3}")), r.arc.circle);
     println!(
         "eq. 21 on the circle ({}{lem}; centre ({:.3}, {:.3}) m, r {:.3} m, toe ({:.2}, {:.2}) m, arc {:.2} m), {}:",
-        r.circle_from, r.arc.xc, r.arc.zc, r.arc.r, r.arc.toe[0], r.arc.toe[1], r.arc.length, r.state
+        r.circle_from, c.xc, c.zc, c.r, r.arc.toe[0], r.arc.toe[1], r.arc.length, r.state
     );
     println!(
         "  K = {:.4} from element stresses; K_i sign segments from the toe: {}",

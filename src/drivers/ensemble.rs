@@ -345,7 +345,7 @@ pub fn mean_critical_circle(input: &EnsembleInput) -> crate::Result<Option<lem::
         SceneError::invalid("lem", "the mean input has no admissible slip circle: no critical circle to sample on")
     })?;
     let c = result.critical.get(m).expect("a method with an FS has a circle");
-    Ok(Some(lem::Circle { xc: c.xc, zc: c.zc, r: c.r }))
+    Ok(Some(c.circle))
 }
 
 fn lem_input_of(input: &EnsembleInput, text: &str) -> crate::Result<LemInput> {
@@ -384,7 +384,7 @@ pub fn run_member(
         };
         if let Some(r) = result {
             let h = headline(&r.fs);
-            let c = h.and_then(|(m, _)| r.critical.get(m).copied());
+            let c = h.and_then(|(m, _)| r.critical.get(m)).map(|c| c.circle);
             record.fs = h.map(|(_, f)| f);
             record.lem = Some(LemMember {
                 ordinary: r.fs.get(Method::Ordinary).copied(),
@@ -404,7 +404,7 @@ pub fn run_member(
         // unless the scene names its own circle.
         let mut scene = scene.clone();
         if let (Some(a), Some(c)) = (scene.analysis.as_mut(), circle) {
-            a.circle.get_or_insert(crate::scene::CircleSpec { xc: c.xc, zc: c.zc, r: c.r });
+            a.circle.get_or_insert(c);
         }
         let run = super::run_scene(&scene, &mut |_, _| {}).map_err(member_error)?;
         let s = &run.summary;

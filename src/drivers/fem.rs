@@ -3,8 +3,8 @@
 
 use std::time::Instant;
 
+use super::analysis::{run_analysis, AnalysisReport};
 use super::input::read_mesh;
-use super::surface::{surface_analysis, SurfaceReport};
 use crate::fem::{self, FemProblem, FemSolution};
 use crate::mesh::Mesh;
 use crate::scene::Scene;
@@ -12,7 +12,7 @@ use crate::scene::Scene;
 /// `cdem fem`: the solution and the scene's `[analysis]` on it.
 pub struct FemRun {
     pub solution: FemSolution,
-    pub surface: Option<SurfaceReport>,
+    pub surface: Option<AnalysisReport>,
 }
 
 /// Solves the scene's FEM reference and runs its `[analysis]` on the cell stresses.
@@ -21,7 +21,7 @@ pub fn run_fem(scene: &Scene) -> crate::Result<FemRun> {
     let mesh = read_mesh(scene)?;
     let solution = solve_mesh(scene, &mesh, t0)?;
     let surface = match &scene.analysis {
-        Some(_) => surface_analysis(scene, &mesh, &solution.coords, &solution.stress, None, "FEM (linear elastic)")?,
+        Some(_) => run_analysis(scene, &mesh, &solution.coords, &solution.stress, None, "FEM (linear elastic)")?,
         None => None,
     };
     Ok(FemRun { solution, surface })

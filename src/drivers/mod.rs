@@ -10,8 +10,9 @@
 //! - [`lem`]: the LEM input of a LEM file or of a scene's `[lem]` table;
 //! - [`ensemble`]: Monte-Carlo members of a scene or LEM file, and their statistics;
 //! - [`srm`]: strength reduction, the factor of safety (`cdem srm`);
-//! - [`surface`]: the scene's `[analysis]`, eq. 21/22 on its slip circle.
+//! - [`analysis`]: the scene's `[analysis]`, eq. 21/22 on its slip circle.
 
+pub mod analysis;
 pub mod ensemble;
 pub mod failure;
 pub mod fem;
@@ -20,9 +21,9 @@ pub mod lem;
 pub mod phase;
 pub mod run;
 pub mod srm;
-pub mod surface;
 
 pub use crate::summary::EndState;
+pub use analysis::{run_analysis, AnalysisReport};
 pub use failure::FailureResult;
 pub use fem::{run_fem, solve_scene as solve_fem, FemRun};
 pub use input::{build_model, read_mesh};
@@ -30,4 +31,3 @@ pub use lem::{load_lem_input, scene_lem_input};
 pub use phase::{Frame, NoWatch, Phase, Progress, Stage, StageSnapshots, Watch};
 pub use run::{run_scene, run_watched, RunResult};
 pub use srm::{run_srm, SrmProgress, SrmResult, Trial};
-pub use surface::{surface_analysis, SurfaceReport};

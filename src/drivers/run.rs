@@ -6,10 +6,10 @@
 
 use std::time::Instant;
 
+use super::analysis::{run_analysis, AnalysisReport, SpringSource};
 use super::failure::{self, FailureResult};
 use super::input::read_mesh;
 use super::phase::{failed_springs, Frame, Phase, Progress, Watch};
-use super::surface::{surface_analysis, SpringSource, SurfaceReport};
 use crate::error::{Error, ModelError};
 use crate::model::{self, Model};
 use crate::scene::Scene;
@@ -29,7 +29,7 @@ pub struct RunResult {
     /// Element stresses of the final state, if the scene asks for them.
     pub stress: Option<Vec<[f64; 6]>>,
     /// The scene's `[analysis]` on the elastic state (the end of phase 1).
-    pub surface: Option<SurfaceReport>,
+    pub surface: Option<AnalysisReport>,
     /// Phase-1 frames (`output.frame_every`); the final state is not among them.
     pub frames: Vec<Frame>,
     pub summary: Summary,
@@ -90,7 +90,7 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
     let surface = match &elastic_stress {
         Some(stress) => {
             let springs = SpringSource { model: &model, u: &state.u, springs: &state.springs };
-            surface_analysis(scene, &mesh, &model.mesh_coords, stress, Some(springs), "elastic (end of phase 1)")?
+            run_analysis(scene, &mesh, &model.mesh_coords, stress, Some(springs), "elastic (end of phase 1)")?
         }
         None => None,
     };

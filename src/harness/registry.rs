@@ -28,6 +28,7 @@ use std::path::Path;
 
 use crate::analysis::slip::SlipCircle;
 use crate::error::Error;
+use crate::geometry::Circle;
 use crate::harness::report::{Check, Goal, RowSpec, SpecKind};
 use crate::lem::LemInput;
 use crate::scene::Scene;
@@ -620,7 +621,10 @@ pub fn sliding_block_acceleration(theta_deg: f64, phi_deg: f64) -> f64 {
 /// The Bishop critical circle of the paper slope (references/lem.md, "The
 /// paper's slope": centre (24.006, 63.222) m, through the toe (20, 20); the
 /// slope faces -x, so the mass turns clockwise), the interface "slip" of verification/cases/slope-slip/slope-slip.geo.
-pub const SLIP_CIRCLE: SlipCircle = SlipCircle { xc: 24.006, zc: 63.222, toe: [20.0, 20.0], clockwise: true };
+/// Its radius is the centre's distance from the toe (to the last bit:
+/// `the_slip_arc_runs_from_the_toe_to_the_crest`).
+pub const SLIP_CIRCLE: SlipCircle =
+    SlipCircle { circle: Circle { xc: 24.006, zc: 63.222, r: 43.40724962491865 }, toe: [20.0, 20.0], clockwise: true };
 
 /// The crest level of the paper slope (m): the section's ground is
 /// (0,20) (20,20) (56,40) (80,40) (references/lem.md).
@@ -640,8 +644,7 @@ pub const MIN_SEGMENT: f64 = 2.0;
 
 /// The radius of [`SLIP_CIRCLE`] (m).
 pub fn slip_circle_radius() -> f64 {
-    let c = SLIP_CIRCLE;
-    ((c.toe[0] - c.xc).powi(2) + (c.toe[1] - c.zc).powi(2)).sqrt()
+    SLIP_CIRCLE.circle.r
 }
 
 /// [`SLIP_CIRCLE`] on the section from the toe to the crest, 101 points
@@ -649,9 +652,10 @@ pub fn slip_circle_radius() -> f64 {
 pub fn slip_arc() -> Vec<(f64, f64)> {
     let (c, r) = (SLIP_CIRCLE, slip_circle_radius());
     let crest = PAPER_SLOPE_CREST_Z;
-    let a0 = (c.toe[1] - c.zc).atan2(c.toe[0] - c.xc);
-    let a1 = (crest - c.zc).atan2((r * r - (crest - c.zc).powi(2)).sqrt());
-    (0..=100).map(|k| a0 + (a1 - a0) * k as f64 / 100.0).map(|a| (c.xc + r * a.cos(), c.zc + r * a.sin())).collect()
+    let Circle { xc, zc, .. } = c.circle;
+    let a0 = (c.toe[1] - zc).atan2(c.toe[0] - xc);
+    let a1 = (crest - zc).atan2((r * r - (crest - zc).powi(2)).sqrt());
+    (0..=100).map(|k| a0 + (a1 - a0) * k as f64 / 100.0).map(|a| (xc + r * a.cos(), zc + r * a.sin())).collect()
 }
 
 // ---------------------------------------------------------------------------
@@ -863,6 +867,9 @@ mod tests {
         assert!((last.1 - PAPER_SLOPE_CREST_Z).abs() < 1e-9, "{last:?}");
         // references/lem.md: r = 43.408 m.
         assert!((slip_circle_radius() - 43.408).abs() < 1e-3);
+        let (c, toe) = (SLIP_CIRCLE.circle, SLIP_CIRCLE.toe);
+        let through_toe = ((toe[0] - c.xc).powi(2) + (toe[1] - c.zc).powi(2)).sqrt();
+        assert_eq!(slip_circle_radius().to_bits(), through_toe.to_bits());
     }
 }
 

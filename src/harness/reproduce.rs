@@ -351,7 +351,7 @@ fn slip_circle(rep: &mut Report, fs_lem: f64, progress: &mut dyn FnMut(&str)) ->
     // the search's minimum `fs_lem`, which is on a neighbouring circle).
     let _ = fs_lem;
     let lem = reg::LEM_PAPER_SLOPE.lem_input()?;
-    let on_circle = crate::lem::Circle { xc: circle.xc, zc: circle.zc, r: reg::slip_circle_radius() };
+    let on_circle = circle.circle;
     let fs_circle =
         crate::lem::evaluate_circle(&lem.section, on_circle, 50).ok().and_then(|f| f.bishop).unwrap_or(f64::NAN);
     let cdem_stress = rs
@@ -418,7 +418,7 @@ fn fig9(
             c.iter().fold((0.0, 0.0), |m, &i| (m.0 + rs.model.x0[i as usize][0], m.1 + rs.model.x0[i as usize][2]));
         let (x, z) = (x / c.len() as f64, z / c.len() as f64);
         let circle = reg::SLIP_CIRCLE;
-        f64::from((x - circle.xc).hypot(z - circle.zc) < reg::slip_circle_radius())
+        f64::from((x - circle.circle.xc).hypot(z - circle.circle.zc) < reg::slip_circle_radius())
     });
     let zone_text = |want: bool| {
         zones
@@ -469,10 +469,11 @@ fn fig9(
 /// The x of the point at arc length `s` from the toe on the slip circle.
 fn arc_x() -> impl Fn(f64) -> f64 {
     let (c, r) = (reg::SLIP_CIRCLE, reg::slip_circle_radius());
-    let a0 = (c.toe[1] - c.zc).atan2(c.toe[0] - c.xc);
+    let (xc, zc) = (c.circle.xc, c.circle.zc);
+    let a0 = (c.toe[1] - zc).atan2(c.toe[0] - xc);
     let end = *reg::slip_arc().last().expect("the arc has points");
-    let dir = ((end.1 - c.zc).atan2(end.0 - c.xc) - a0).signum();
-    move |s| c.xc + r * (a0 + dir * s / r).cos()
+    let dir = ((end.1 - zc).atan2(end.0 - xc) - a0).signum();
+    move |s| xc + r * (a0 + dir * s / r).cos()
 }
 
 /// Step 6, Fig. 10: progressive failure of the paper slope on its slip circle.

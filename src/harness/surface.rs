@@ -7,8 +7,8 @@
 use std::path::Path;
 
 use crate::analysis::SurfacePoint;
-use crate::drivers::surface::Factors;
-use crate::drivers::{FemRun, RunResult, SurfaceReport};
+use crate::drivers::analysis::Factors;
+use crate::drivers::{AnalysisReport, FemRun, RunResult};
 use crate::error::Error;
 use crate::harness::figures::{slip_profile, Patch, Series, SlipProfile, Span};
 use crate::harness::section::{front_patches, front_patches_of_cells};
@@ -57,15 +57,15 @@ pub fn fem_png(run: &FemRun, path: &Path) -> Result<bool, Error> {
 
 /// 1 for a cell whose corners' centroid lies inside the circle (the sliding
 /// mass), else 0.
-fn in_mass(r: &SurfaceReport, corners: impl Iterator<Item = [f64; 3]>) -> f64 {
+fn in_mass(r: &AnalysisReport, corners: impl Iterator<Item = [f64; 3]>) -> f64 {
     let (mut x, mut z, mut n) = (0.0, 0.0, 0.0);
     for p in corners {
         (x, z, n) = (x + p[0], z + p[2], n + 1.0);
     }
-    f64::from((x / n - r.arc.xc).hypot(z / n - r.arc.zc) < r.arc.r)
+    f64::from((x / n - r.arc.circle.xc).hypot(z / n - r.arc.circle.zc) < r.arc.circle.r)
 }
 
-fn draw(r: &SurfaceReport, section: &[Patch], path: &Path) -> Result<(), Error> {
+fn draw(r: &AnalysisReport, section: &[Patch], path: &Path) -> Result<(), Error> {
     let x_of = |s: f64| r.arc.point_at(s)[0];
     let profile =
         |f: &Factors| -> Vec<(f64, f64)> { f.points.iter().zip(&f.k_i).map(|(p, &k)| (x_of(p.s), k)).collect() };
@@ -105,7 +105,7 @@ fn draw(r: &SurfaceReport, section: &[Patch], path: &Path) -> Result<(), Error> 
         format!("Eq. 21: K = {:.3} (element stresses){springs_k}{lem}.", r.stresses.k),
         format!(
             "State: {}; strength: {}; circle ({}): centre ({:.2}, {:.2}) m, r {:.2} m, section y = {:.2} m.",
-            r.state, r.strength_from, r.circle_from, r.arc.xc, r.arc.zc, r.arc.r, r.arc.y
+            r.state, r.strength_from, r.circle_from, r.arc.circle.xc, r.arc.circle.zc, r.arc.circle.r, r.arc.y
         ),
         format!("Shaded: K_i < 1 (zones lettered from the toe); {beyond} points beyond the window are drawn as triangles at its edge."),
     ];

@@ -225,10 +225,10 @@ pub fn snapshot_row(id: &str, ours: &[String], snap: &str, seconds: f64) -> Chec
 /// paper slope's critical circle, CDEM (elastic) and FEM.
 #[derive(Debug, Clone)]
 pub struct SurfaceRuns {
-    pub column_cdem: crate::drivers::SurfaceReport,
-    pub column_fem: crate::drivers::SurfaceReport,
-    pub slope_cdem: crate::drivers::SurfaceReport,
-    pub slope_fem: crate::drivers::SurfaceReport,
+    pub column_cdem: crate::drivers::AnalysisReport,
+    pub column_fem: crate::drivers::AnalysisReport,
+    pub slope_cdem: crate::drivers::AnalysisReport,
+    pub slope_fem: crate::drivers::AnalysisReport,
     pub seconds: f64,
 }
 

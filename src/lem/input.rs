@@ -149,7 +149,7 @@ struct FileToml {
     #[serde(default)]
     analysis: AnalysisToml,
     search: Option<SearchToml>,
-    circle: Option<CircleToml>,
+    circle: Option<Circle>,
     /// Read and checked by `cdem ensemble` (the scene's `EnsembleSpec`); the
     /// LEM itself runs the file's own (mean) values.
     #[allow(dead_code)]
@@ -242,14 +242,6 @@ struct EntryExitToml {
     n_entry: usize,
     #[serde(default = "ten")]
     radii: usize,
-}
-
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct CircleToml {
-    xc: f64,
-    zc: f64,
-    r: f64,
 }
 
 fn check_count(key: &str, n: usize, lo: usize, hi: usize) -> Result<(), SceneError> {
@@ -363,7 +355,7 @@ impl LemInput {
 /// `[analysis]`, `[circle]` and `[search]`, checked (keys as in a LEM file).
 fn analysis_and_mode(
     a: AnalysisToml,
-    circle: Option<CircleToml>,
+    circle: Option<Circle>,
     search: Option<SearchToml>,
 ) -> Result<(usize, Vec<Method>, Mode), SceneError> {
     check_count("analysis.slices", a.slices, 3, 10_000)?;
@@ -378,7 +370,7 @@ fn analysis_and_mode(
             if !(c.xc.is_finite() && c.zc.is_finite() && c.r.is_finite() && c.r > 0.0) {
                 return Err(SceneError::invalid("circle", "xc, zc must be finite and r > 0"));
             }
-            Mode::Circle(Circle { xc: c.xc, zc: c.zc, r: c.r })
+            Mode::Circle(c)
         }
         (None, search) => Mode::Search(search_spec(search)?),
     };
@@ -466,7 +458,7 @@ pub struct SceneLem {
     #[serde(default)]
     material: Vec<SceneLemMaterial>,
     search: Option<SearchToml>,
-    circle: Option<CircleToml>,
+    circle: Option<Circle>,
 }
 
 #[derive(Debug, Clone, Deserialize)]
@@ -566,8 +558,7 @@ impl LemInput {
         };
         let section = LemSection::new(ground, lower, background, zones, lem.facing).map_err(in_scene)?;
         let analysis = AnalysisToml { slices: lem.slices, methods: lem.methods.clone() };
-        let (slices, methods, mode) =
-            analysis_and_mode(analysis, lem.circle.clone(), lem.search.clone()).map_err(in_scene)?;
+        let (slices, methods, mode) = analysis_and_mode(analysis, lem.circle, lem.search.clone()).map_err(in_scene)?;
         Ok(LemInput { section, slices, methods, mode })
     }
 }

@@ -69,13 +69,9 @@ pub use section::{cut_mesh, Facing, LemSection, LowerBound, Material, SectionCut
 /// error falls at second order (`tests/lem.rs`, `fs_converges_with_slice_count`).
 pub const DEFAULT_SLICES: usize = 50;
 
-/// A trial circle (m), in the section's own coordinates.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Circle {
-    pub xc: f64,
-    pub zc: f64,
-    pub r: f64,
-}
+/// A trial circle (m), in the section's own coordinates: the crate's one
+/// circle type, re-exported as the circle of `lem`'s API.
+pub use crate::geometry::Circle;
 
 /// The three methods of slices.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Deserialize, Serialize)]
@@ -137,9 +133,9 @@ impl<T> PerMethod<T> {
 /// A method's critical circle, with where it meets the ground.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct CriticalCircle {
-    pub xc: f64,
-    pub zc: f64,
-    pub r: f64,
+    /// The circle; its `xc`, `zc`, `r` are keys of this table in the JSON.
+    #[serde(flatten)]
+    pub circle: Circle,
     /// Crest-side intersection with the ground `[x, z]`.
     pub entry: [f64; 2],
     /// Toe-side intersection with the ground `[x, z]`.
@@ -197,9 +193,7 @@ fn single_circle(input: &LemInput, circle: Circle) -> Result<LemResult, crate::E
         result.critical.set(
             m,
             v.map(|f| CriticalCircle {
-                xc: circle.xc,
-                zc: circle.zc,
-                r: circle.r,
+                circle,
                 entry: fs.entry,
                 exit: fs.exit,
                 fs: f,
@@ -222,9 +216,9 @@ pub fn table(result: &LemResult) -> String {
                 "{:<9} {:>7.4} {:>9.3} {:>9.3} {:>8.3}  ({:>7.3},{:>7.3})  ({:>7.3},{:>7.3})\n",
                 m.name(),
                 c.fs,
-                c.xc,
-                c.zc,
-                c.r,
+                c.circle.xc,
+                c.circle.zc,
+                c.circle.r,
                 c.exit[0],
                 c.exit[1],
                 c.entry[0],

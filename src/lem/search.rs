@@ -470,9 +470,7 @@ pub(crate) fn run(input: &LemInput, spec: &SearchSpec) -> Result<LemResult, crat
         result.critical.set(
             m,
             Some(CriticalCircle {
-                xc: f.x(b.circle.xc),
-                zc: b.circle.zc,
-                r: b.circle.r,
+                circle: Circle { xc: f.x(b.circle.xc), ..b.circle },
                 entry: point(s.x_entry),
                 exit: point(s.x_exit),
                 fs: b.fs,

@@ -10,7 +10,7 @@ use std::path::Path;
 
 use super::vtk::{grid_vtu, write_pvd};
 use super::{staged, write_atomic, write_json};
-use crate::drivers::SurfaceReport;
+use crate::drivers::AnalysisReport;
 use crate::error::Error;
 use crate::fem::FemSolution;
 use crate::mesh::CellKind;
@@ -23,16 +23,16 @@ pub fn vtu_string(sol: &FemSolution) -> String {
 }
 
 /// Writes `out/summary.json`, `out/final.vtu` and `out/run.pvd`, and for a
-/// scene with `[analysis]` its files ([`super::surface`]), staged (moved into
+/// scene with `[analysis]` its files ([`super::analysis`]), staged (moved into
 /// `out` together).
-pub fn write_fem(sol: &FemSolution, surface: Option<&SurfaceReport>, out: &Path) -> Result<(), Error> {
+pub fn write_fem(sol: &FemSolution, analysis: Option<&AnalysisReport>, out: &Path) -> Result<(), Error> {
     staged(out, |dir| {
         write_json(&dir.join("summary.json"), &sol.summary)?;
         write_atomic(&dir.join("final.vtu"), vtu_string(sol).as_bytes())?;
         write_pvd(&dir.join("run.pvd"), &[(0.0, "final.vtu".to_string())])?;
         let mut files = vec!["summary.json".into(), "final.vtu".into(), "run.pvd".into()];
-        if let Some(report) = surface {
-            files.extend(super::surface::write_surface(report, dir)?);
+        if let Some(report) = analysis {
+            files.extend(super::analysis::write_analysis(report, dir)?);
         }
         Ok(files)
     })

@@ -6,11 +6,11 @@
 //! written into a staging directory and moved into place together
 //! ([`write_run`]), so a failed run leaves nothing half-written behind.
 
+pub mod analysis;
 pub mod ensemble;
 pub mod fem;
 pub mod run;
 pub mod srm;
-pub mod surface;
 pub mod vtk;
 
 use std::io::Write;

@@ -9,7 +9,7 @@
 //!   phase-2 frames `stage-NNNNNNNN.vtu` (where the failure state changed,
 //!   and the last) collected in `failure.pvd`;
 //! - for a scene with `[analysis]`: `analysis.json` and `analysis.csv`
-//!   ([`super::surface`]), on the elastic state.
+//!   ([`super::analysis`]), on the elastic state.
 
 use std::fmt::Write;
 use std::path::Path;
@@ -76,7 +76,7 @@ fn write_all(scene: &Scene, result: &RunResult, dir: &Path) -> Result<Vec<String
         files.push("run.pvd".into());
     }
     if let Some(report) = &result.surface {
-        files.extend(super::surface::write_surface(report, dir)?);
+        files.extend(super::analysis::write_analysis(report, dir)?);
     }
     if let Some(f) = &result.failure {
         files.extend(write_failure(result, f, dir, scene.output.vtk)?);

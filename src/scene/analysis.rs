@@ -19,12 +19,13 @@
 use serde::Deserialize;
 
 use crate::error::SceneError;
+use crate::geometry::Circle;
 
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct AnalysisSpec {
     /// The slip circle; absent: the LEM critical circle of `[lem]`.
-    pub circle: Option<CircleSpec>,
+    pub circle: Option<Circle>,
     /// The section plane (m). Default: the middle of the mesh's y extent.
     pub y: Option<f64>,
     /// Stations along the arc. Default 200.
@@ -36,15 +37,6 @@ pub struct AnalysisSpec {
     pub strength: Option<SurfaceStrength>,
     /// Minimum length of a K_i sign segment (m).
     pub min_segment: Option<f64>,
-}
-
-/// A circle in the x-z section (m).
-#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct CircleSpec {
-    pub xc: f64,
-    pub zc: f64,
-    pub r: f64,
 }
 
 /// Mohr-Coulomb strength on the surface.

@@ -72,7 +72,7 @@ pub use crate::model::spec::{
     Axis, Boundary, JointMode, JointSection, MaterialSection, ModelSpec, Perturbation, StrengthSection,
 };
 use crate::solver::SolverParams;
-pub use analysis::{AnalysisSpec, CircleSpec, SurfaceStrength};
+pub use analysis::{AnalysisSpec, SurfaceStrength};
 pub use ensemble::{Analysis, Distribution, EnsembleSpec, LemSurface, RandomVariable};
 
 #[derive(Debug, Clone, Deserialize)]

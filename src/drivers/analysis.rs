@@ -1,14 +1,14 @@
 //! The scene's `[analysis]`: eq. 19-22 on its slip circle from a solved
 //! state. The circle is the scene's or the Bishop critical circle of its
 //! `[lem]`; the arc is found and sampled in the (perturbed) mesh by
-//! [`crate::analysis::surface`], the tractions come from the cells'
+//! [`crate::analysis::arc`], the tractions come from the cells'
 //! stresses and, where the circle is an `[[interface]]`, from its springs.
 
 use serde::Serialize;
 
+use crate::analysis::arc::{from_cell_stresses, length_per_cell, Arc, Station};
 use crate::analysis::safety::{safety_factors_with, sign_segments, Segment, SurfacePoint};
 use crate::analysis::slip::from_springs;
-use crate::analysis::surface::{from_cell_stresses, length_per_cell, Arc};
 use crate::error::{Error, SceneError};
 use crate::mesh::locate::CellLocator;
 use crate::mesh::Mesh;
@@ -19,7 +19,7 @@ use crate::scene::Scene;
 /// Eq. 21/22 on the scene's surface: `analysis.json`, with the stations in
 /// `analysis.csv`.
 #[derive(Debug, Clone, Serialize)]
-pub struct SurfaceReport {
+pub struct AnalysisReport {
     /// Where the circle comes from: `"scene"` or `"lem critical (Bishop)"`.
     pub circle_from: String,
     /// The Bishop FS of the LEM critical circle, when the circle is that one.
@@ -64,24 +64,24 @@ pub struct SpringSource<'a> {
 /// The scene's `[analysis]` on cell stresses `stress` (mesh cell order) at
 /// the perturbed node positions `coords`, and on springs when given; None
 /// for a scene without `[analysis]`. `state` names the state for the report.
-pub fn surface_analysis(
+pub fn run_analysis(
     scene: &Scene,
     mesh: &Mesh,
     coords: &[[f64; 3]],
     stress: &[[f64; 6]],
     springs: Option<SpringSource>,
     state: &'static str,
-) -> Result<Option<SurfaceReport>, Error> {
+) -> Result<Option<AnalysisReport>, Error> {
     let Some(spec) = &scene.analysis else { return Ok(None) };
     let invalid = |key: &str, reason: String| Error::from(SceneError::invalid(key, reason));
     let (circle, circle_from, lem_fs) = match spec.circle {
-        Some(c) => ((c.xc, c.zc, c.r), "scene".to_string(), None),
+        Some(c) => (c, "scene".to_string(), None),
         None => {
             let result = crate::lem::analyse(&super::scene_lem_input(scene)?)?;
             let c = result.critical.bishop.ok_or_else(|| {
                 invalid("analysis.circle", "missing, and the [lem] search found no Bishop critical circle".into())
             })?;
-            ((c.xc, c.zc, c.r), "lem critical (Bishop)".to_string(), Some(c.fs))
+            (c.circle, "lem critical (Bishop)".to_string(), Some(c.fs))
         }
     };
     let y = spec.y.unwrap_or_else(|| {
@@ -90,7 +90,7 @@ pub fn surface_analysis(
     });
     let locator = CellLocator::new(coords, &mesh.cells);
     let key = if spec.circle.is_some() { "analysis.circle" } else { "analysis" };
-    let arc = Arc::find(&locator, circle.0, circle.1, circle.2, y).map_err(|r| invalid(key, r))?;
+    let arc = Arc::find(&locator, circle, y).map_err(|r| invalid(key, r))?;
     let stations = arc.stations(&locator, spec.stations);
     let min_segment = spec.min_segment.unwrap_or_else(|| length_per_cell(&arc, &stations));
 
@@ -129,7 +129,7 @@ pub fn surface_analysis(
         }
         _ => None,
     };
-    Ok(Some(SurfaceReport { circle_from, lem_fs, arc, state, strength_from, min_segment, stresses, springs }))
+    Ok(Some(AnalysisReport { circle_from, lem_fs, arc, state, strength_from, min_segment, stresses, springs }))
 }
 
 fn factors(points: Vec<SurfacePoint>, strength: Vec<(f64, f64)>, min_segment: f64) -> Factors {
@@ -140,11 +140,7 @@ fn factors(points: Vec<SurfacePoint>, strength: Vec<(f64, f64)>, min_segment: f6
 }
 
 /// Each station's strength from the `[[lem.material]]` of its cell's volume group.
-fn material_strengths(
-    scene: &Scene,
-    mesh: &Mesh,
-    stations: &[crate::analysis::surface::Station],
-) -> Result<Vec<(f64, f64)>, Error> {
+fn material_strengths(scene: &Scene, mesh: &Mesh, stations: &[Station]) -> Result<Vec<(f64, f64)>, Error> {
     let missing = || {
         Error::from(SceneError::invalid(
             "analysis.strength",

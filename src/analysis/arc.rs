@@ -13,14 +13,15 @@
 
 use super::safety::{traction_from_stress, SurfacePoint};
 use super::slip::SlipCircle;
+use crate::geometry::Circle;
 use crate::mesh::locate::CellLocator;
 
 /// The arc of a circle inside the model's section.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Arc {
-    pub xc: f64,
-    pub zc: f64,
-    pub r: f64,
+    /// The circle; its `xc`, `zc`, `r` are keys of this table in the JSON.
+    #[serde(flatten)]
+    pub circle: Circle,
     /// The section plane.
     pub y: f64,
     /// The toe (exit) end `[x, z]`.
@@ -51,16 +52,17 @@ pub struct Station {
 /// Angular samples of the full circle used to find the arc.
 const SAMPLES: usize = 3600;
 
-/// The point at polar angle `a` of the circle `(xc, zc, r)` in the plane `y`.
-fn on_circle(xc: f64, zc: f64, r: f64, y: f64, a: f64) -> [f64; 3] {
-    [xc + r * a.cos(), y, zc + r * a.sin()]
+/// The point at polar angle `a` of `circle` in the plane `y`.
+fn on_circle(circle: &Circle, y: f64, a: f64) -> [f64; 3] {
+    let [x, z] = circle.at(a);
+    [x, y, z]
 }
 
 impl Arc {
-    /// The arc of the circle `(xc, zc, r)` in the plane `y` inside the cells
-    /// of `locator`; the error says why there is none.
-    pub fn find(locator: &CellLocator, xc: f64, zc: f64, r: f64, y: f64) -> Result<Self, String> {
-        let at = |a: f64| on_circle(xc, zc, r, y, a);
+    /// The arc of `circle` in the plane `y` inside the cells of `locator`;
+    /// the error says why there is none.
+    pub fn find(locator: &CellLocator, circle: Circle, y: f64) -> Result<Self, String> {
+        let at = |a: f64| on_circle(&circle, y, a);
         let inside = |a: f64| locator.locate(at(a)).is_some();
         let bottom = -std::f64::consts::FRAC_PI_2;
         let angle = |k: usize| bottom + std::f64::consts::TAU * k as f64 / SAMPLES as f64;
@@ -114,13 +116,11 @@ impl Arc {
         let (a_toe, a_crest) = if p0[2] <= p1[2] { (a0, a1) } else { (a1, a0) };
         let (t, c) = (at(a_toe), at(a_crest));
         Ok(Self {
-            xc,
-            zc,
-            r,
+            circle,
             y,
             toe: [t[0], t[2]],
             crest: [c[0], c[2]],
-            length: r * (a_crest - a_toe).abs(),
+            length: circle.r * (a_crest - a_toe).abs(),
             a_toe,
             a_crest,
         })
@@ -128,13 +128,13 @@ impl Arc {
 
     /// The circle with its toe, for the normal and the sliding direction.
     pub fn slip_circle(&self) -> SlipCircle {
-        SlipCircle { xc: self.xc, zc: self.zc, toe: self.toe, clockwise: self.a_crest > self.a_toe }
+        SlipCircle { circle: self.circle, toe: self.toe, clockwise: self.a_crest > self.a_toe }
     }
 
     /// The point `[x, z]` at arc length `s` from the toe.
     pub fn point_at(&self, s: f64) -> [f64; 2] {
-        let a = self.a_toe + (self.a_crest - self.a_toe).signum() * s / self.r;
-        let p = on_circle(self.xc, self.zc, self.r, self.y, a);
+        let a = self.a_toe + (self.a_crest - self.a_toe).signum() * s / self.circle.r;
+        let p = on_circle(&self.circle, self.y, a);
         [p[0], p[2]]
     }
 
@@ -146,9 +146,9 @@ impl Arc {
         (0..n)
             .filter_map(|k| {
                 let a = self.a_toe + (k as f64 + 0.5) * da;
-                let x = on_circle(self.xc, self.zc, self.r, self.y, a);
-                let s = self.r * (a - self.a_toe).abs();
-                locator.locate(x).map(|cell| Station { s, x, ds: self.r * da.abs(), cell })
+                let x = on_circle(&self.circle, self.y, a);
+                let s = self.circle.r * (a - self.a_toe).abs();
+                locator.locate(x).map(|cell| Station { s, x, ds: self.circle.r * da.abs(), cell })
             })
             .collect()
     }

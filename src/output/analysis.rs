@@ -1,5 +1,5 @@
-//! The files of a scene's `[analysis]` ([`write_surface`]):
-//! - `analysis.json` ([`SurfaceReport`]): the circle and its arc, the state,
+//! The files of a scene's `[analysis]` ([`write_analysis`]):
+//! - `analysis.json` ([`AnalysisReport`]): the circle and its arc, the state,
 //!   where the strength comes from, and per traction source (`stresses`,
 //!   `springs`) eq. 21 K, its resisting and driving sums and the K_i sign
 //!   segments;
@@ -14,8 +14,8 @@ use std::path::Path;
 use serde::Serialize;
 
 use super::{write_csv, write_json};
-use crate::drivers::surface::Factors;
-use crate::drivers::SurfaceReport;
+use crate::drivers::analysis::Factors;
+use crate::drivers::AnalysisReport;
 use crate::error::Error;
 
 #[derive(Serialize)]
@@ -33,7 +33,7 @@ struct Row {
 }
 
 /// Writes `analysis.json` and `analysis.csv` into `dir`; returns their names.
-pub fn write_surface(report: &SurfaceReport, dir: &Path) -> Result<Vec<String>, Error> {
+pub fn write_analysis(report: &AnalysisReport, dir: &Path) -> Result<Vec<String>, Error> {
     write_json(&dir.join("analysis.json"), report)?;
     let rows = |source: &'static str, f: &Factors| -> Vec<Row> {
         f.points
