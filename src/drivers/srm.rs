@@ -51,6 +51,11 @@ pub struct Trial {
     pub max_displacement: f64,
     /// Springs that failed (either kind).
     pub failed_springs: usize,
+    /// The trial's own setup before its first step: the elastic state
+    /// copied, its strengths reduced, the plan restarted (s).
+    pub setup_s: f64,
+    /// The whole trial, setup included (s).
+    pub wall_s: f64,
 }
 
 impl Trial {
@@ -80,6 +85,10 @@ pub struct SrmResult {
     pub elastic_steps: usize,
     /// Step budget of each trial.
     pub trial_budget: usize,
+    /// Building the phase-2 plan (solver, masses, time step, budget), once
+    /// for every trial (s): what each trial paid again before the plan was
+    /// shared.
+    pub plan_setup_s: f64,
     pub wall_s: f64,
     /// The displacement since the elastic state at the final `hi` (the
     /// mechanism), 3 per node.
@@ -117,6 +126,8 @@ pub struct Reduction {
     strengths: JointState,
     elastic: State,
     plan: PhasePlan,
+    /// Building `plan` (s).
+    pub plan_setup_s: f64,
     params: FailureParams,
 }
 
@@ -143,18 +154,22 @@ impl Reduction {
             )
             .into());
         }
+        let t = std::time::Instant::now();
         let plan = phase_plan(&run.model, &scene.solver, &params, usize::MAX, None)?;
+        let plan_setup_s = t.elapsed().as_secs_f64();
         let steps = run.elastic.steps;
         let strengths = run.state.joints.clone();
-        Ok((Self { model: run.model, strengths, elastic: run.state, plan, params }, steps))
+        Ok((Self { model: run.model, strengths, elastic: run.state, plan, plan_setup_s, params }, steps))
     }
 
     /// Phase 2 with every breakable strength divided by `factor`; returns the
     /// trial and the displacement since the elastic state.
     pub fn trial(&mut self, factor: f64, watch: &mut dyn Watch) -> Result<(Trial, Vec<f64>), Error> {
+        let t = std::time::Instant::now();
         let mut state = self.elastic.clone();
         state.joints = self.strengths.reduced(factor);
         self.plan.restart();
+        let setup_s = t.elapsed().as_secs_f64();
         let r = failure::run(&mut self.plan, &self.model, &mut state, &self.params, false, watch)?;
         let since: Vec<f64> = state.u.iter().zip(&r.u_elastic).map(|(a, b)| a - b).collect();
         let trial = Trial {
@@ -163,6 +178,8 @@ impl Reduction {
             steps: r.report.steps,
             max_displacement: max_displacement(&since),
             failed_springs: failed_springs(&state.springs.status).total(),
+            setup_s,
+            wall_s: t.elapsed().as_secs_f64(),
         };
         Ok((trial, since))
     }
@@ -243,6 +260,7 @@ pub fn run_srm(scene: &Scene, progress: &mut dyn FnMut(SrmProgress)) -> Result<(
         trials,
         elastic_steps,
         trial_budget,
+        plan_setup_s: red.plan_setup_s,
         wall_s: t0.elapsed().as_secs_f64(),
         mechanism,
     };

@@ -109,7 +109,9 @@ impl FailureFigures {
             let _ = writeln!(
                 md,
                 "| cdem srm, slip-surface slope, {} | {:.1} s, {fs}, {} trials; steps per trial mean {:.0} / max {} \
-                 = {:.3} / {:.3} of 3DEC's cap; {} trials ran to the budget of {} steps | <= {} s; cap {} steps |",
+                 = {:.3} / {:.3} of 3DEC's cap; {} trials ran to the budget of {} steps; a trial {:.3} s of which \
+                 setup {:.1e} s, the phase-2 plan built once in {:.1e} s (before: once per trial, {:.1e} s in all) \
+                 | <= {} s; cap {} steps |",
                 f.variant,
                 f.seconds,
                 f.trials,
@@ -119,6 +121,10 @@ impl FailureFigures {
                 f.max_trial_steps as f64 / cap,
                 f.undecided,
                 f.trial_budget,
+                f.mean_trial_s,
+                f.mean_trial_setup_s,
+                f.plan_setup_s,
+                f.plan_setup_s * f.trials as f64,
                 reg::GOAL_SRM_SECONDS,
                 cap
             );
