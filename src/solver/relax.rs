@@ -114,7 +114,9 @@ pub struct StopRules<'a> {
     /// Step budget of this relaxation.
     pub max_steps: usize,
     pub sliding: Option<Sliding<'a>>,
-    /// A history row every this many (global) steps, and at the stop.
+    /// A history row every this many (global) steps, and at convergence
+    /// (a phase that stops by sliding, budget or caller ends on its last
+    /// regular row).
     pub history_every: usize,
 }
 
