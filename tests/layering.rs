@@ -10,8 +10,9 @@
 //! | 4 | `solver`, `fem`, `lem`, `analysis` (beside each other: none imports another) |
 //! | 5 | `scene` |
 //! | 6 | `drivers` |
-//! | 7 | `output` |
-//! | 8 | `harness` (feature `harness`) |
+//! | 7 | `output` (its `figures` with feature `plot`) |
+//! | 8 | `app` (feature `plot`: one function per product command) |
+//! | 9 | `harness` (feature `harness`: verification only) |
 //!
 //! The CLI (`src/bin/cdem.rs`) sits on top and reaches the library through
 //! `cdem::`. The test reads every `.rs` file under `src/`, takes each
@@ -20,7 +21,7 @@
 
 use std::path::{Path, PathBuf};
 
-const LAYERS: [(&str, u32); 13] = [
+const LAYERS: [(&str, u32); 14] = [
     ("error", 0),
     ("summary", 0),
     ("mesh", 1),
@@ -33,7 +34,8 @@ const LAYERS: [(&str, u32); 13] = [
     ("scene", 5),
     ("drivers", 6),
     ("output", 7),
-    ("harness", 8),
+    ("app", 8),
+    ("harness", 9),
 ];
 
 /// The crate root's re-exports (all from layer 0: `error`, `summary`).
