@@ -219,7 +219,15 @@ impl EnsembleInput {
             let bad_key = |e: keys::UnknownKey| SceneError::invalid(format!("ensemble.random[{i}].key"), e.to_string());
             let v = match probe.number(&r.key).map_err(bad_key)? {
                 Number::Real(v) => *v,
-                Number::Toml(v) => v.as_float().or(v.as_integer().map(|n| n as f64)).unwrap_or(f64::NAN),
+                Number::Toml(v) => {
+                    let n = v.as_float().or(v.as_integer().map(|n| n as f64)).unwrap_or(f64::NAN);
+                    // A real number of `[lem]`, not an integer setting (`lem.slices`).
+                    *v = toml::Value::Float(n);
+                    if probe.scene_lem().is_err() {
+                        return Err(bad_key(keys::UnknownKey { key: r.key.clone() }).into());
+                    }
+                    n
+                }
             };
             let mean = r.mean.unwrap_or(v);
             if r.distribution == Distribution::Lognormal && mean <= 0.0 {
@@ -284,7 +292,8 @@ impl EnsembleInput {
         }
         match source {
             Source::Scene { mut scene, perturbed, lem } => {
-                if perturbed {
+                // A drawn perturbation.ratio perturbs with the member's seed too.
+                if perturbed || draws.iter().any(|d| d.key.starts_with("perturbation.")) {
                     scene.perturbation.seed = seed;
                 }
                 if let Some(lem) = lem.filter(|_| draws.iter().any(|d| d.key.starts_with("lem."))) {
@@ -309,6 +318,14 @@ enum Number<'a> {
 }
 
 impl Source {
+    /// A scene's `[lem]` read from its table as it now stands.
+    fn scene_lem(&self) -> Result<Option<SceneLem>, toml::de::Error> {
+        match self {
+            Source::Scene { lem: Some(lem), .. } => toml::Value::Table(lem.clone()).try_into().map(Some),
+            _ => Ok(None),
+        }
+    }
+
     fn number(&mut self, key: &str) -> Result<Number<'_>, keys::UnknownKey> {
         match self {
             Source::Scene { lem: Some(lem), .. } if key.starts_with("lem.") => {
