@@ -15,19 +15,23 @@
 //! [`crate::analysis::stats`].
 
 pub mod keys;
+mod shards;
+mod summary;
 
 use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
-use crate::analysis::stats::{self, ConvergencePoint, Distribution as Stats, Reliability};
 use crate::error::SceneError;
 use crate::lem::{self, LemInput, Method, Mode, SceneLem};
 use crate::mesh::perturb::SplitMix64;
 use crate::scene::{Analysis, Distribution, EnsembleSpec, LemSurface, Scene};
 use crate::summary::EndState;
 use crate::Error;
+
+pub use shards::{digest_hex, merge_shards, ShardInfo};
+pub use summary::{aggregate, EnsembleSummary};
 
 /// The golden-ratio increment of SplitMix64.
 const GOLDEN: u64 = 0x9E37_79B9_7F4A_7C15;
@@ -519,171 +523,4 @@ pub fn run_members(
         progress(out.len());
     }
     Ok(out)
-}
-
-/// What `ensemble.json` holds.
-#[derive(Debug, Clone, Serialize)]
-pub struct EnsembleSummary {
-    pub input: String,
-    pub members: usize,
-    pub seed: u64,
-    pub analyses: Vec<Analysis>,
-    pub lem_surface: Option<LemSurface>,
-    /// The mean critical circle (xc, zc, r) the members were evaluated on.
-    pub lem_circle: Option<[f64; 3]>,
-    pub fs_source: Option<&'static str>,
-    /// Members without an FS (an inadmissible circle, no Bishop root).
-    pub members_without_fs: usize,
-    pub fs: Option<Stats>,
-    pub reliability: Option<Reliability>,
-    pub convergence: Vec<ConvergencePoint>,
-    /// Statistics of each random variable's draws.
-    pub draws: Vec<(String, Stats)>,
-    pub elastic_max_abs_u: Option<Stats>,
-    /// Eq. 21 K of the members with `[analysis]` (`CdemMember::eq21_k`).
-    pub eq21_k: Option<Stats>,
-    /// `P(K < 1)` and the reliability indices of eq. 21 K: a stress-based
-    /// probability beside the FS's.
-    pub eq21_reliability: Option<Reliability>,
-    /// Members per phase-2 end state.
-    pub end_states: Vec<(EndState, usize)>,
-}
-
-/// The statistics of complete records (member order).
-pub fn aggregate(
-    input: &str,
-    seed: u64,
-    analyses: &[Analysis],
-    lem_surface: Option<LemSurface>,
-    lem_circle: Option<lem::Circle>,
-    records: &[MemberRecord],
-) -> EnsembleSummary {
-    let fs: Vec<f64> = records.iter().filter_map(|r| r.fs).collect();
-    let keys: Vec<String> = records.first().map_or(Vec::new(), |r| r.draws.iter().map(|d| d.key.clone()).collect());
-    let draws = keys
-        .iter()
-        .enumerate()
-        .filter_map(|(i, k)| {
-            let v: Vec<f64> = records.iter().map(|r| r.draws[i].value).collect();
-            stats::distribution(&v).map(|d| (k.clone(), d))
-        })
-        .collect();
-    let u: Vec<f64> = records.iter().filter_map(|r| r.cdem.as_ref().map(|c| c.elastic_max_abs_u)).collect();
-    let k: Vec<f64> = records.iter().filter_map(|r| r.cdem.as_ref().and_then(|c| c.eq21_k)).collect();
-    let mut end_states = Vec::new();
-    for e in [EndState::Equilibrium, EndState::GlobalSliding, EndState::Undecided] {
-        let n = records.iter().filter(|r| r.cdem.as_ref().and_then(|c| c.end_state) == Some(e)).count();
-        if n > 0 {
-            end_states.push((e, n));
-        }
-    }
-    let has_lem = analyses.contains(&Analysis::Lem);
-    EnsembleSummary {
-        input: input.to_string(),
-        members: records.len(),
-        seed,
-        analyses: analyses.to_vec(),
-        lem_surface: lem_surface.filter(|_| has_lem),
-        lem_circle: lem_circle.map(|c| [c.xc, c.zc, c.r]),
-        fs_source: if analyses.contains(&Analysis::Srm) {
-            Some("strength reduction (cdem srm)")
-        } else {
-            has_lem.then_some("LEM Bishop simplified (else Spencer, else ordinary)")
-        },
-        members_without_fs: records.len() - fs.len(),
-        fs: stats::distribution(&fs),
-        reliability: stats::reliability(&fs),
-        convergence: if fs.is_empty() { Vec::new() } else { stats::convergence(&fs) },
-        draws,
-        elastic_max_abs_u: stats::distribution(&u),
-        eq21_k: stats::distribution(&k),
-        eq21_reliability: stats::reliability(&k),
-        end_states,
-    }
-}
-
-/// `shard-I-of-N.json`: what a shard ran, for `cdem ensemble merge`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct ShardInfo {
-    pub input: String,
-    pub digest: String,
-    pub members: usize,
-    pub seed: u64,
-    pub shard: [usize; 2],
-    pub first: usize,
-    pub end: usize,
-    pub wall_s: f64,
-    pub threads: usize,
-}
-
-/// Member records from shard directories, checked to be one complete
-/// ensemble: same input and seed, every member exactly once; each with its
-/// JSON line as the shard wrote it.
-pub fn merge_shards(dirs: &[PathBuf]) -> crate::Result<(ShardInfo, Vec<(MemberRecord, String)>)> {
-    let mut infos: Vec<ShardInfo> = Vec::new();
-    // Each record with its line as written: the merged file repeats the lines.
-    let mut records: Vec<(MemberRecord, String)> = Vec::new();
-    let invalid = |key: &str, reason: String| Error::from(SceneError::invalid(key, reason));
-    for dir in dirs {
-        let entries = std::fs::read_dir(dir).map_err(|e| Error::io(dir, e))?;
-        let mut names: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
-        names.sort();
-        for p in names {
-            let name = p.file_name().and_then(|n| n.to_str()).unwrap_or("");
-            if name.starts_with("shard-") && name.ends_with(".json") {
-                let text = std::fs::read_to_string(&p).map_err(|e| Error::io(&p, e))?;
-                let info: ShardInfo = serde_json::from_str(&text)
-                    .map_err(|e| invalid("merge", format!("{}: not a shard record: {e}", p.display())))?;
-                let jsonl = p.with_file_name(name.replace("shard-", "members-").replace(".json", ".jsonl"));
-                let text = std::fs::read_to_string(&jsonl).map_err(|e| Error::io(&jsonl, e))?;
-                for (line, l) in text.lines().enumerate() {
-                    let r: MemberRecord = serde_json::from_str(l)
-                        .map_err(|e| invalid("merge", format!("{} line {}: {e}", jsonl.display(), line + 1)))?;
-                    records.push((r, l.to_string()));
-                }
-                infos.push(info);
-            }
-        }
-    }
-    let Some(first) = infos.first().cloned() else {
-        return Err(invalid("merge", format!("no shard-*.json in {dirs:?}")));
-    };
-    for i in &infos {
-        if (i.digest.as_str(), i.members, i.seed) != (first.digest.as_str(), first.members, first.seed) {
-            return Err(invalid(
-                "merge",
-                format!(
-                    "shard {}/{} ran {} (seed {}, {} members), shard {}/{} ran {} (seed {}, {} members)",
-                    first.shard[0],
-                    first.shard[1],
-                    first.input,
-                    first.seed,
-                    first.members,
-                    i.shard[0],
-                    i.shard[1],
-                    i.input,
-                    i.seed,
-                    i.members
-                ),
-            ));
-        }
-    }
-    records.sort_by_key(|r| r.0.member);
-    for (k, (r, _)) in records.iter().enumerate() {
-        if r.member != k {
-            let what = if r.member < k { "twice" } else { "missing" };
-            let m = if r.member < k { r.member } else { k };
-            return Err(invalid("merge", format!("member {m} is {what} (merging {} shards)", infos.len())));
-        }
-    }
-    if records.len() != first.members {
-        return Err(invalid("merge", format!("{} of {} members present", records.len(), first.members)));
-    }
-    let wall: f64 = infos.iter().map(|i| i.wall_s).sum();
-    Ok((ShardInfo { shard: [0, 1], first: 0, end: first.members, wall_s: wall, ..first }, records))
-}
-
-/// The digest as text (JSON numbers lose bits above 2^53).
-pub fn digest_hex(d: u64) -> String {
-    format!("{d:016x}")
 }
