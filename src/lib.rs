@@ -28,7 +28,9 @@
 // The layers, bottom up; a module imports only from layers below its own
 // (tests/layering.rs checks it):
 //   error, summary -> mesh, geometry -> physics -> model -> solver | fem | lem | analysis
-//   -> scene -> drivers -> output -> harness (feature `harness`) -> the CLI.
+//   -> scene -> drivers -> output (its figures with feature `plot`) -> app
+//   (feature `plot`: one function per product command) -> harness (feature
+//   `harness`: verification only) -> the CLI.
 pub mod error;
 pub mod summary;
 
@@ -48,6 +50,9 @@ pub mod scene;
 pub mod drivers;
 
 pub mod output;
+
+#[cfg(feature = "plot")]
+pub mod app;
 
 #[cfg(feature = "harness")]
 pub mod harness;

@@ -10,17 +10,20 @@
 //! | 4 | `solver`, `fem`, `lem`, `analysis` (beside each other: none imports another) |
 //! | 5 | `scene` |
 //! | 6 | `drivers` |
-//! | 7 | `output` |
-//! | 8 | `harness` (feature `harness`) |
+//! | 7 | `output` (its `figures` with feature `plot`) |
+//! | 8 | `app` (feature `plot`: one function per product command) |
+//! | 9 | `harness` (feature `harness`: verification only) |
 //!
 //! The CLI (`src/bin/cdem.rs`) sits on top and reaches the library through
 //! `cdem::`. The test reads every `.rs` file under `src/`, takes each
 //! `crate::<module>` path outside comments, and fails naming the file, the
-//! line and both layers when one points upwards or sideways.
+//! line and both layers when one points upwards or sideways. A second test
+//! checks that no modules import each other in a circle inside a layer, at
+//! any depth (`drivers::run` and `drivers::failure`, say).
 
 use std::path::{Path, PathBuf};
 
-const LAYERS: [(&str, u32); 14] = [
+const LAYERS: [(&str, u32); 15] = [
     ("error", 0),
     ("summary", 0),
     ("mesh", 1),
@@ -34,7 +37,8 @@ const LAYERS: [(&str, u32); 14] = [
     ("scene", 5),
     ("drivers", 6),
     ("output", 7),
-    ("harness", 8),
+    ("app", 8),
+    ("harness", 9),
 ];
 
 /// The crate root's re-exports (all from layer 0: `error`, `summary`).

@@ -12,10 +12,10 @@ use std::path::Path;
 
 use cdem::analysis::slip::{from_springs, from_stresses};
 use cdem::analysis::{safety_factors, sign_segments, Segment, SurfacePoint};
-use cdem::harness::figures::{line_plot, section_contour, Scale, Series};
 use cdem::harness::registry::{self as reg, MIN_SEGMENT, PAPER_EQ21_K, PAPER_LEM_FS, SLIP_CIRCLE};
-use cdem::harness::section::element_mean_displacement;
 use cdem::lem::evaluate_circle;
+use cdem::output::figures::section::element_mean_displacement;
+use cdem::output::figures::{line_plot, section_contour, Scale, Series};
 
 fn segments(p: &[SurfacePoint], k_i: &[f64]) -> Vec<Segment> {
     let s: Vec<f64> = p.iter().map(|q| q.s).collect();
@@ -96,7 +96,7 @@ fn eq21_on_the_lem_critical_circle_and_ki_sign_segments() {
 
     // Fig. 9: the surface on the section, and K_i from toe to crest.
     std::fs::create_dir_all("target/figures").unwrap();
-    let patches = cdem::harness::section::front_patches(&run.model, |e| {
+    let patches = cdem::output::figures::section::front_patches(&run.model, |e| {
         element_mean_displacement(&run.model, &run.state.u, e, 2)
     });
     let arc = reg::slip_arc();

@@ -30,9 +30,9 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 use cdem::drivers::{run_watched, EndState, Stage, StageSnapshots};
-use cdem::harness::figures::{section_contour, Patch};
-use cdem::harness::section::{element_mean_displacement, front_patches};
 use cdem::model::Model;
+use cdem::output::figures::section::{element_mean_displacement, front_patches};
+use cdem::output::figures::{section_contour, Patch};
 use cdem::physics::spring::SpringStatus;
 use cdem::scene::Scene;
 use cdem::solver::{RunReport, State};

@@ -8,7 +8,7 @@ use std::time::{Duration, Instant};
 use clap::{Args, Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 
-use cdem::scene::Scene;
+use cdem::app::RunProgress;
 
 #[derive(Parser)]
 #[command(
@@ -75,7 +75,8 @@ enum Command {
         #[arg(long, default_value = "perf")]
         out: PathBuf,
         /// Resolutions of the scaling study (`refine` of slope.geo: 1000 refine^2 elements).
-        #[arg(long, value_delimiter = ',', default_values_t = vec![0.5, 1.0, 2.0, 4.0, 7.0, 10.0])]
+        /// Several values comma- or space-separated: `--refine 1,2,4` or `--refine 1 2 4`.
+        #[arg(long, value_delimiter = ',', num_args = 1.., default_value = "0.5,1,2,4,7,10")]
         refine: Vec<f64>,
         /// Run dynamic relaxation (block masses) in the scaling study only up to this many
         /// elements (it takes about 16 minutes at 1e5); PCG and the FEM run at every size.
@@ -300,15 +301,15 @@ fn main() -> ExitCode {
 
 /// `cdem run`: phase 1 and, for a scene with `[failure]`, phase 2.
 fn run(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
-    let scene = Scene::load(scene_path)?;
-    let budget = scene.solver.max_steps.unwrap_or(0) + scene.failure.as_ref().map_or(0, |f| f.max_steps.unwrap_or(0));
-    let pb = progress_bar(budget);
-    let result = cdem::drivers::run_scene(&scene, &mut |step, ratio| {
-        pb.set_position(step as u64);
-        pb.set_message(format!("unbalanced ratio {ratio:.2e}"));
+    let pb = progress_bar(0);
+    let result = cdem::app::run(scene_path, out, &mut |p| match p {
+        RunProgress::Loaded { budget } => pb.set_length(budget as u64),
+        RunProgress::Step { step, ratio } => {
+            pb.set_position(step as u64);
+            pb.set_message(format!("unbalanced ratio {ratio:.2e}"));
+        }
     })?;
     pb.finish_and_clear();
-    cdem::output::write_run(&scene, &result, out)?;
     let s = &result.summary;
     let p1 = s.phase1.as_ref().expect("a CDEM run has phase 1");
     match &s.phase2 {
@@ -339,7 +340,6 @@ fn run(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
         ),
     }
     if let Some(report) = &result.surface {
-        cdem::harness::surface::run_png(&result, &out.join("analysis.png"))?;
         print_surface(report);
     }
     Ok(if s.end_state == cdem::EndState::Undecided { Outcome::OutOfSteps } else { Outcome::Reached })
@@ -371,7 +371,7 @@ fn print_surface(r: &cdem::drivers::AnalysisReport) {
 
 /// `cdem ensemble`: a shard or the whole ensemble, or `merge`.
 fn ensemble(args: EnsembleArgs) -> cdem::Result<()> {
-    use cdem::harness::ensemble as ens;
+    use cdem::app::ensemble as ens;
     let summary = match (args.merge, args.input) {
         (Some(EnsembleCommand::Merge { dirs, out }), _) => (ens::merge(&dirs, &out)?, out),
         (None, Some(input)) => {
@@ -420,9 +420,8 @@ fn ensemble(args: EnsembleArgs) -> cdem::Result<()> {
 /// `cdem srm`: strength reduction; progress per trial on the terminal.
 fn srm(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
     use cdem::drivers::SrmProgress;
-    let scene = Scene::load(scene_path)?;
     let pb = progress_bar(0);
-    let (result, model) = cdem::drivers::run_srm(&scene, &mut |p| match p {
+    let result = cdem::app::srm(scene_path, out, &mut |p| match p {
         SrmProgress::Elastic(steps) => pb.suspend(|| eprintln!("elastic phase: {steps} steps")),
         SrmProgress::TrialStart(f) => pb.set_message(format!("trial F = {f:.4}")),
         SrmProgress::Step(step, ratio) => {
@@ -438,8 +437,6 @@ fn srm(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
         }),
     })?;
     pb.finish_and_clear();
-    cdem::output::write_srm(&result, &model, out)?;
-    cdem::harness::srm::mechanism_png(&result, &model, &out.join("mechanism.png"))?;
     let [lo, hi] = result.bracket;
     let show = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.4}"));
     match result.fs {
@@ -478,9 +475,7 @@ fn srm(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
 
 /// `cdem fem`: the implicit FEM reference on the continuous mesh.
 fn fem(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
-    let scene = Scene::load(scene_path)?;
-    let fem = cdem::drivers::run_fem(&scene)?;
-    cdem::output::write_fem(&fem.solution, fem.surface.as_ref(), out)?;
+    let fem = cdem::app::fem(scene_path, out)?;
     let sol = &fem.solution;
     let s = &sol.summary;
     println!(
@@ -493,7 +488,6 @@ fn fem(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
         out.display()
     );
     if let Some(report) = &fem.surface {
-        cdem::harness::surface::fem_png(&fem, &out.join("analysis.png"))?;
         print_surface(report);
     }
     Ok(if s.converged { Outcome::Reached } else { Outcome::OutOfSteps })
@@ -543,13 +537,29 @@ Exit codes: 0 done, 1 failed, 2 invalid input (the message names the key).";
 /// `cdem lem`: runs a LEM input, prints a short table and writes the JSON
 /// (to `out`, or beside the input with extension `.json`).
 fn lem(input: &Path, out: Option<&Path>) -> cdem::Result<()> {
-    let result = cdem::lem::analyse(&cdem::drivers::load_lem_input(input)?)?;
-    let out = out.map(Path::to_path_buf).unwrap_or_else(|| input.with_extension("json"));
-    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).map_err(|e| cdem::Error::io(dir, e))?;
-    }
-    cdem::output::write_json(&out, &result)?;
+    let (result, out) = cdem::app::lem(input, out)?;
     // A closed stdout (e.g. `| head`) is not an error of the analysis.
     let _ = writeln!(std::io::stdout().lock(), "{}wrote {}", cdem::lem::table(&result), out.display());
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn refine(args: &[&str]) -> Vec<f64> {
+        let argv = ["cdem", "perf"].iter().chain(args).copied();
+        match Cli::try_parse_from(argv).expect("parses").command {
+            Command::Perf { refine, .. } => refine,
+            _ => unreachable!("a perf command"),
+        }
+    }
+
+    #[test]
+    fn perf_refine_takes_the_default_its_help_shows_and_both_separators() {
+        assert_eq!(refine(&[]), [0.5, 1.0, 2.0, 4.0, 7.0, 10.0]);
+        assert_eq!(refine(&["--refine", "0.5,1,2,4,7,10"]), refine(&[]));
+        assert_eq!(refine(&["--refine", "1", "2", "4"]), [1.0, 2.0, 4.0]);
+        assert_eq!(refine(&["--refine", "1,2", "4", "--no-srm"]), [1.0, 2.0, 4.0]);
+    }
 }

@@ -16,19 +16,19 @@ use crate::drivers::run_scene;
 use crate::drivers::{run_watched, RunResult, StageSnapshots};
 use crate::error::Error;
 use crate::fem::FemSolution;
-use crate::harness::figures::{
-    contour_panels, line_plot, slip_profile, ContourStyle, Line, Panel, Patch, Quantity, Scale, Series, SlipProfile,
-    Span,
-};
 use crate::harness::registry::{self as reg, Case};
 use crate::harness::report::{Check, Table};
-use crate::harness::section::{
+use crate::harness::validation;
+use crate::model::Model;
+use crate::output::figures::analysis::weak_zones;
+use crate::output::figures::section::{
     element_mean_displacement, front_joint_traces, front_patches, front_patches_deformed, front_patches_of_cells,
     spring_opening, spring_point,
 };
-use crate::harness::surface::weak_zones;
-use crate::harness::validation;
-use crate::model::Model;
+use crate::output::figures::{
+    contour_panels, line_plot, slip_profile, ContourStyle, Line, Panel, Patch, Quantity, Scale, Series, SlipProfile,
+    Span,
+};
 use plotters::style::RGBColor;
 
 /// Runs everything into `out` and writes `out/report.md`.

@@ -21,8 +21,8 @@ use crate::drivers::run_scene;
 use crate::drivers::solve_fem as solve_scene;
 use crate::error::Error;
 use crate::fem::FemSolution;
-use crate::harness::figures::{line_plot, Scale, Series};
 use crate::harness::registry;
+use crate::output::figures::{line_plot, Scale, Series};
 use crate::scene::Scene;
 
 /// One point of the study.

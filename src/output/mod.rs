@@ -1,6 +1,7 @@
 //! Writing results: `summary.json`, `history.csv`, VTK frames (`.vtu` +
-//! `.pvd`), the phase-2 tables, and the FEM's files ([`fem`]). The top of
-//! the library's layers: it writes what the drivers return.
+//! `.pvd`), the phase-2 tables, and the FEM's files ([`fem`]); with the
+//! feature `plot`, the product's figures ([`figures`]: `analysis.png`,
+//! `mechanism.png`, the ensemble's). It writes what the drivers return.
 //!
 //! Every file is written to a temporary name and renamed; a run's files are
 //! written into a staging directory and moved into place together
@@ -9,6 +10,8 @@
 pub mod analysis;
 pub mod ensemble;
 pub mod fem;
+#[cfg(feature = "plot")]
+pub mod figures;
 pub mod run;
 pub mod srm;
 pub mod vtk;

@@ -11,7 +11,8 @@
 //! lem_surface = "critical"       # "critical": every member on the mean critical circle; "search": its own
 //!
 //! [[ensemble.random]]            # a strength drawn per member, as Slide's probabilistic analysis
-//! key = "interface[0].strength.cohesion"   # any number of the file, by its key
+//! key = "interface[0].strength.cohesion"   # any real number of the file, by its key
+//!                                # (set on the typed member: drivers::ensemble::keys)
 //! distribution = "normal"        # or "lognormal"
 //! mean = 16e3                    # default: the file's value
 //! std_dev = 2e3

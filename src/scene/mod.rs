@@ -218,6 +218,12 @@ impl Scene {
         Ok(scene)
     }
 
+    /// Checks a scene as [`Scene::from_toml`] checks a file's: for a scene
+    /// changed in code (an ensemble member's drawn values).
+    pub fn validate(&self) -> Result<(), SceneError> {
+        validate::validate(self)
+    }
+
     /// Reads, parses and validates a scene file.
     pub fn load(path: &Path) -> crate::Result<Self> {
         let text = std::fs::read_to_string(path).map_err(|e| crate::Error::io(path, e))?;

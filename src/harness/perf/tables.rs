@@ -388,7 +388,7 @@ pub fn scaling_figure(path: &Path, scaling: &[ScalingRow]) -> Result<(), Error> 
     if scaling.len() < 2 {
         return Ok(());
     }
-    use crate::harness::figures::{line_plot, Scale, Series};
+    use crate::output::figures::{line_plot, Scale, Series};
     let pts = |f: &dyn Fn(&ScalingRow) -> f64| scaling.iter().map(|r| (r.elements as f64, f(r))).collect::<Vec<_>>();
     let (step, pcg, fem) = (pts(&|r| r.step_s), pts(&|r| r.pcg_s), pts(&|r| r.fem_s));
     let dr: Vec<(f64, f64)> = scaling.iter().filter_map(|r| r.dr_s.map(|s| (r.elements as f64, s))).collect();

@@ -2,7 +2,7 @@
 //! element contributes its corners on its lower-y side, ordered around their
 //! centroid.
 
-use super::figures::Patch;
+use super::plot::Patch;
 use crate::model::Model;
 
 /// The patch of one element from its corner positions.

@@ -1,115 +1,17 @@
-//! `cdem ensemble`: runs a shard (or all) of an ensemble's members and writes
-//! its files, and merges shards; the figures of an ensemble (FS histogram with
-//! FS = 1 marked, convergence of the mean FS and of PF with the member count).
+//! The figures of an ensemble: `fs-histogram.png` (the members' FS with
+//! FS = 1 and the mean marked) and `convergence.png` (the mean FS and PF of
+//! the first n members against n).
 
-use std::path::{Path, PathBuf};
-use std::time::Instant;
+use std::path::Path;
 
 use plotters::prelude::*;
 
-use super::figures::plot_err;
-use crate::drivers::ensemble::{self as ens, EnsembleInput, EnsembleSummary, MemberRecord, ShardInfo};
-
-/// What `cdem ensemble INPUT` was asked for.
-#[derive(Debug, Clone)]
-pub struct Request {
-    pub input: PathBuf,
-    pub out: PathBuf,
-    /// `--members` (default: `[ensemble] members`, else 100).
-    pub members: Option<usize>,
-    /// `--seed` (default: `[ensemble] seed`, else 1).
-    pub seed: Option<u64>,
-    /// `--shard I/N` (default 0/1: the whole ensemble, merged at once).
-    pub shard: (usize, usize),
-}
-
-/// What was written.
-pub enum Outcome {
-    /// A shard of several: its records, to be merged.
-    Shard { info: ShardInfo },
-    /// The whole ensemble, aggregated.
-    Whole { summary: Box<EnsembleSummary> },
-}
-
-/// Runs the requested members; `progress(done, total)` after each batch.
-pub fn run(req: &Request, progress: &mut dyn FnMut(usize, usize)) -> crate::Result<Outcome> {
-    let t0 = Instant::now();
-    let input = EnsembleInput::load(&req.input)?;
-    let members = req.members.unwrap_or(input.default_members());
-    let seed = req.seed.unwrap_or(input.default_seed());
-    let (i, n) = req.shard;
-    if n == 0 || i >= n || n > members.max(1) {
-        return Err(crate::error::SceneError::invalid(
-            "--shard",
-            format!("I/N needs 0 <= I < N <= members ({members}), got {i}/{n}"),
-        )
-        .into());
-    }
-    let range = ens::shard_range(members, req.shard);
-    let total = range.len();
-    let circle = ens::mean_critical_circle(&input)?;
-    let records = ens::run_members(&input, seed, range.clone(), circle, &mut |done| progress(done, total))?;
-    let info = ShardInfo {
-        input: req.input.display().to_string(),
-        digest: ens::digest_hex(input.digest),
-        members,
-        seed,
-        shard: [i, n],
-        first: range.start,
-        end: range.end,
-        wall_s: t0.elapsed().as_secs_f64(),
-        threads: rayon::current_num_threads(),
-    };
-    if n > 1 {
-        crate::output::ensemble::write_shard(&req.out, &info, &records)?;
-        return Ok(Outcome::Shard { info });
-    }
-    let summary = ens::aggregate(&info.input, seed, &input.analyses, Some(input.spec.lem_surface), circle, &records);
-    finish(&req.out, &summary, &records, None)?;
-    crate::output::write_json(&req.out.join("run.json"), &info)?;
-    Ok(Outcome::Whole { summary: Box::new(summary) })
-}
-
-/// `cdem ensemble merge DIR... --out OUT`.
-pub fn merge(dirs: &[PathBuf], out: &Path) -> crate::Result<EnsembleSummary> {
-    let (info, lines) = ens::merge_shards(dirs)?;
-    let records: Vec<MemberRecord> = lines.iter().map(|(r, _)| r.clone()).collect();
-    let input = EnsembleInput::load(Path::new(&info.input))?;
-    if ens::digest_hex(input.digest) != info.digest {
-        return Err(crate::error::SceneError::invalid(
-            "merge",
-            format!(
-                "{} changed since the shards ran (digest {} now, {} then)",
-                info.input,
-                ens::digest_hex(input.digest),
-                info.digest
-            ),
-        )
-        .into());
-    }
-    let circle = ens::mean_critical_circle(&input)?;
-    let summary =
-        ens::aggregate(&info.input, info.seed, &input.analyses, Some(input.spec.lem_surface), circle, &records);
-    let text: String = lines.iter().map(|(_, l)| format!("{l}\n")).collect();
-    finish(out, &summary, &records, Some(&text))?;
-    crate::output::write_json(&out.join("run.json"), &info)?;
-    Ok(summary)
-}
-
-/// Writes the ensemble's files; `lines`: the member lines as the shards wrote them.
-fn finish(out: &Path, summary: &EnsembleSummary, records: &[MemberRecord], lines: Option<&str>) -> crate::Result<()> {
-    crate::output::ensemble::write_ensemble(out, summary, records, lines)?;
-    let fs: Vec<f64> = records.iter().filter_map(|r| r.fs).collect();
-    if !fs.is_empty() {
-        histogram(&out.join("fs-histogram.png"), &fs, summary)?;
-        convergence(&out.join("convergence.png"), summary)?;
-    }
-    Ok(())
-}
+use super::plot::{init_fonts, plot_err};
+use crate::drivers::ensemble::EnsembleSummary;
 
 /// Histogram of the members' FS, FS = 1 and the mean marked.
 pub fn histogram(path: &Path, fs: &[f64], s: &EnsembleSummary) -> crate::Result<()> {
-    super::figures::init_fonts();
+    init_fonts();
     let (lo, hi) = fs.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
     let (lo, hi) = (lo.min(1.0), hi.max(1.0));
     let span = (hi - lo).max(1e-6);
@@ -185,7 +87,7 @@ pub fn histogram(path: &Path, fs: &[f64], s: &EnsembleSummary) -> crate::Result<
 
 /// Mean FS and PF of the first n members against n (log n).
 pub fn convergence(path: &Path, s: &EnsembleSummary) -> crate::Result<()> {
-    super::figures::init_fonts();
+    init_fonts();
     let pts = &s.convergence;
     if pts.is_empty() {
         return Ok(());
@@ -237,4 +139,13 @@ pub fn convergence(path: &Path, s: &EnsembleSummary) -> crate::Result<()> {
         }
     }
     root.present().map_err(|e| plot_err(path, e))
+}
+
+/// An ensemble's figures in `dir` (none when no member has an FS).
+pub fn write_figures(dir: &Path, s: &EnsembleSummary, fs: &[f64]) -> crate::Result<()> {
+    if !fs.is_empty() {
+        histogram(&dir.join("fs-histogram.png"), fs, s)?;
+        convergence(&dir.join("convergence.png"), s)?;
+    }
+    Ok(())
 }

@@ -4,10 +4,10 @@
 
 use std::path::Path;
 
+use super::plot::section_contour;
+use super::section::{element_mean_displacement, front_patches};
 use crate::drivers::SrmResult;
 use crate::error::Error;
-use crate::harness::figures::section_contour;
-use crate::harness::section::{element_mean_displacement, front_patches};
 use crate::model::Model;
 
 /// Writes `path` (PNG) if the reduction found an unstable factor; returns

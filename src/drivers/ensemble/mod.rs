@@ -1,10 +1,11 @@
 //! Monte-Carlo ensembles over the stochastic structural planes (docs/method.md
 //! section 4.7): member `k` of an ensemble with base seed `BASE` is the input
-//! file with
-//! - its `perturbation.seed` replaced by [`member_seed`]`(BASE, k)` (a scene with
+//! file's typed input (its [`Scene`], or a LEM file's [`LemInput`]) with
+//! - its `perturbation.seed` set to [`member_seed`]`(BASE, k)` (a scene with
 //!   `[perturbation]`): another realisation of the random joint geometry;
 //! - each `[[ensemble.random]]` number drawn from its distribution with the
-//!   member's own stream ([`draw`]);
+//!   member's own stream ([`draw`]) and set on the number its key names
+//!   ([`keys`]);
 //!
 //! and is run by the analyses of `[ensemble] analyses`. A member depends on
 //! `(file, BASE, k)` only, so members are the same whatever the sharding
@@ -13,18 +14,24 @@
 //! byte-identical. [`aggregate`] turns the records into the statistics of
 //! [`crate::analysis::stats`].
 
+pub mod keys;
+mod shards;
+mod summary;
+
 use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
-use crate::analysis::stats::{self, ConvergencePoint, Distribution as Stats, Reliability};
 use crate::error::SceneError;
-use crate::lem::{self, LemInput, Method, Mode};
+use crate::lem::{self, LemInput, Method, Mode, SceneLem};
 use crate::mesh::perturb::SplitMix64;
 use crate::scene::{Analysis, Distribution, EnsembleSpec, LemSurface, Scene};
 use crate::summary::EndState;
 use crate::Error;
+
+pub use shards::{digest_hex, merge_shards, ShardInfo};
+pub use summary::{aggregate, EnsembleSummary};
 
 /// The golden-ratio increment of SplitMix64.
 const GOLDEN: u64 = 0x9E37_79B9_7F4A_7C15;
@@ -45,8 +52,8 @@ pub fn member_seed(base: u64, k: usize) -> u64 {
 pub struct EnsembleInput {
     pub path: PathBuf,
     pub base_dir: PathBuf,
-    /// The file without its `[ensemble]` table.
-    table: toml::Table,
+    /// The mean input: the file's own values.
+    source: Source,
     /// True for a CDEM scene (a `[mesh]` table), false for a LEM file.
     pub is_scene: bool,
     pub spec: EnsembleSpec,
@@ -121,36 +128,39 @@ pub struct SrmMember {
     pub trials: usize,
 }
 
+/// The mean input of an ensemble, typed.
+#[derive(Debug, Clone)]
+enum Source {
+    Scene {
+        /// The scene as the file gives it, without its `[ensemble]`.
+        scene: Box<Scene>,
+        /// Whether the file has a `[perturbation]` table (members then get their seeds).
+        perturbed: bool,
+        /// The scene's `[lem]` table as written, for the keys `lem.…` ([`keys`]).
+        lem: Option<toml::Table>,
+    },
+    Lem(Box<keys::LemParts>),
+}
+
+/// A member's input: the mean input with its drawn values (and seed) set.
+#[derive(Debug, Clone)]
+pub enum MemberInput {
+    Scene(Box<Scene>),
+    Lem(Box<LemInput>),
+}
+
+impl MemberInput {
+    /// The member's LEM input: a LEM file's, or that of the scene's `[lem]`.
+    pub fn lem_input(&self) -> crate::Result<LemInput> {
+        match self {
+            MemberInput::Scene(scene) => super::lem::scene_lem_input(scene),
+            MemberInput::Lem(input) => Ok((**input).clone()),
+        }
+    }
+}
+
 fn fnv1a(bytes: &[u8]) -> u64 {
     bytes.iter().fold(0xcbf2_9ce4_8422_2325u64, |h, &b| (h ^ b as u64).wrapping_mul(0x100_0000_01b3))
-}
-
-/// A key as errors spell it, `interface[0].strength.cohesion`, as path segments.
-fn segments(key: &str) -> Option<Vec<(&str, Option<usize>)>> {
-    key.split('.')
-        .map(|s| match s.split_once('[') {
-            None if !s.is_empty() => Some((s, None)),
-            None => None,
-            Some((name, rest)) => Some((name, Some(rest.strip_suffix(']')?.parse().ok()?))),
-        })
-        .collect()
-}
-
-fn value_at<'a>(table: &'a mut toml::Table, key: &str) -> Option<&'a mut toml::Value> {
-    let segs = segments(key)?;
-    let (last, head) = segs.split_last()?;
-    let mut t = table;
-    let step = |t: &'a mut toml::Table, (name, index): (&str, Option<usize>)| -> Option<&'a mut toml::Value> {
-        let v = t.get_mut(name)?;
-        match index {
-            None => Some(v),
-            Some(i) => v.as_array_mut()?.get_mut(i),
-        }
-    };
-    for &s in head {
-        t = step(t, s)?.as_table_mut()?;
-    }
-    step(t, *last)
 }
 
 impl EnsembleInput {
@@ -163,8 +173,8 @@ impl EnsembleInput {
         let mut table: toml::Table = text.parse().map_err(|e: toml::de::Error| syntax(e.to_string()))?;
         let is_scene = table.contains_key("mesh");
         // The file as a whole must be valid as it stands (the mean member).
-        if is_scene {
-            let scene = Scene::from_toml(&text, &base_dir, path)?;
+        let source = if is_scene {
+            let mut scene = Scene::from_toml(&text, &base_dir, path)?;
             if scene.lem.is_none() && scene.perturbation.ratio == 0.0 && scene.ensemble.is_none() {
                 return Err(SceneError::invalid(
                     "ensemble",
@@ -172,12 +182,19 @@ impl EnsembleInput {
                 )
                 .into());
             }
+            scene.ensemble = None;
+            let lem = table.get("lem").and_then(toml::Value::as_table).cloned();
+            Source::Scene { scene: Box::new(scene), perturbed: table.contains_key("perturbation"), lem }
         } else {
-            LemInput::from_toml(&text, &base_dir, path)?;
-        }
-        if !is_scene {
-            inline_mesh_section(&mut table, &base_dir)?;
-        }
+            let input = LemInput::from_toml(&text, &base_dir, path)?;
+            let materials = table.get("material").and_then(toml::Value::as_array);
+            let zoned: Vec<bool> = materials
+                .map_or(&[][..], Vec::as_slice)
+                .iter()
+                .map(|m| m.as_table().is_some_and(|m| m.contains_key("zone")))
+                .collect();
+            Source::Lem(Box::new(keys::LemParts::new(&input, &zoned)))
+        };
         let spec: EnsembleSpec = match table.remove("ensemble") {
             None => EnsembleSpec::default(),
             Some(v) => v.try_into().map_err(|e: toml::de::Error| syntax(format!("[ensemble]: {e}")))?,
@@ -201,15 +218,20 @@ impl EnsembleInput {
             return Err(SceneError::invalid("ensemble.analyses", "\"lem\" needs a [lem] table in the scene").into());
         }
         let mut means = Vec::with_capacity(spec.random.len());
+        let mut probe = source.clone();
         for (i, r) in spec.random.iter().enumerate() {
-            let file_value =
-                value_at(&mut table, &r.key).and_then(|v| v.as_float().or(v.as_integer().map(|n| n as f64)));
-            let Some(v) = file_value else {
-                return Err(SceneError::invalid(
-                    format!("ensemble.random[{i}].key"),
-                    format!("{:?} is not a number of this file (keys are spelled as in errors: interface[0].strength.cohesion)", r.key),
-                )
-                .into());
+            let bad_key = |e: keys::UnknownKey| SceneError::invalid(format!("ensemble.random[{i}].key"), e.to_string());
+            let v = match probe.number(&r.key).map_err(bad_key)? {
+                Number::Real(v) => *v,
+                Number::Toml(v) => {
+                    let n = v.as_float().or(v.as_integer().map(|n| n as f64)).unwrap_or(f64::NAN);
+                    // A real number of `[lem]`, not an integer setting (`lem.slices`).
+                    *v = toml::Value::Float(n);
+                    if probe.scene_lem().is_err() {
+                        return Err(bad_key(keys::UnknownKey { key: r.key.clone() }).into());
+                    }
+                    n
+                }
             };
             let mean = r.mean.unwrap_or(v);
             if r.distribution == Distribution::Lognormal && mean <= 0.0 {
@@ -224,7 +246,7 @@ impl EnsembleInput {
         Ok(EnsembleInput {
             path: path.to_path_buf(),
             base_dir,
-            table,
+            source,
             is_scene,
             spec,
             analyses,
@@ -243,13 +265,9 @@ impl EnsembleInput {
         self.spec.seed.unwrap_or(1)
     }
 
-    /// Member `k`'s file text and draws.
-    fn member_text(&self, base: u64, k: usize) -> crate::Result<(String, u64, Vec<Draw>)> {
+    /// Member `k`'s seed and draws.
+    pub fn draws(&self, base: u64, k: usize) -> crate::Result<(u64, Vec<Draw>)> {
         let seed = member_seed(base, k);
-        let mut table = self.table.clone();
-        if let Some(p) = table.get_mut("perturbation").and_then(toml::Value::as_table_mut) {
-            p.insert("seed".into(), toml::Value::Integer(seed as i64));
-        }
         let mut rng = SplitMix64::new(seed ^ STRENGTH_STREAM);
         let mut draws = Vec::with_capacity(self.spec.random.len());
         for (i, (r, &mean)) in self.spec.random.iter().zip(&self.means).enumerate() {
@@ -259,32 +277,70 @@ impl EnsembleInput {
                     format!("no draw within [min, max] in {MAX_REDRAWS} tries: the bounds exclude the distribution"),
                 )
             })?;
-            *value_at(&mut table, &r.key).expect("checked at load") = toml::Value::Float(value);
             draws.push(Draw { key: r.key.clone(), value });
         }
-        let text = toml::to_string(&table).map_err(|e| Error::io(&self.path, std::io::Error::other(e)))?;
-        Ok((text, seed, draws))
+        Ok((seed, draws))
+    }
+
+    /// The input of the member with perturbation seed `seed` and `draws`:
+    /// the mean input with the seed and every drawn value set on it, checked
+    /// as the file would be.
+    pub fn member_input(&self, seed: u64, draws: &[Draw]) -> crate::Result<MemberInput> {
+        let mut source = self.source.clone();
+        let unknown = |e: keys::UnknownKey| SceneError::invalid("ensemble.random", e.to_string());
+        for d in draws {
+            match source.number(&d.key).map_err(unknown)? {
+                Number::Real(v) => *v = d.value,
+                Number::Toml(v) => *v = toml::Value::Float(d.value),
+            }
+        }
+        match source {
+            Source::Scene { mut scene, perturbed, lem } => {
+                // A drawn perturbation.ratio perturbs with the member's seed too.
+                if perturbed || draws.iter().any(|d| d.key.starts_with("perturbation.")) {
+                    scene.perturbation.seed = seed;
+                }
+                if let Some(lem) = lem.filter(|_| draws.iter().any(|d| d.key.starts_with("lem."))) {
+                    let read: SceneLem = toml::Value::Table(lem).try_into().map_err(|e: toml::de::Error| {
+                        SceneError::Syntax { path: self.path.clone(), message: format!("[lem]: {e}") }
+                    })?;
+                    scene.lem = Some(read);
+                }
+                scene.validate()?;
+                Ok(MemberInput::Scene(scene))
+            }
+            Source::Lem(parts) => Ok(MemberInput::Lem(Box::new(parts.input()?))),
+        }
     }
 }
 
-/// A LEM file's `section.from_mesh` read once: its ground and lowest node
-/// written into the table, so that members do not each read the mesh.
-fn inline_mesh_section(table: &mut toml::Table, base_dir: &Path) -> crate::Result<()> {
-    let Some(section) = table.get_mut("section").and_then(toml::Value::as_table_mut) else { return Ok(()) };
-    let Some(file) = section.get("from_mesh").and_then(toml::Value::as_str).map(PathBuf::from) else { return Ok(()) };
-    let group = section.get("ground_group").and_then(toml::Value::as_str).unwrap_or_default().to_string();
-    let y_plane = section.get("y_plane").and_then(|v| v.as_float().or(v.as_integer().map(|n| n as f64)));
-    let mesh = crate::mesh::gmsh::read_msh(&base_dir.join(file))?;
-    let (ground, z_min) = lem::LemSection::from_mesh(&mesh, &group, y_plane)?;
-    for k in ["from_mesh", "ground_group", "y_plane"] {
-        section.remove(k);
+/// A number of the mean input that a key names.
+enum Number<'a> {
+    Real(&'a mut f64),
+    /// In a scene's `[lem]` table (see [`keys`]).
+    Toml(&'a mut toml::Value),
+}
+
+impl Source {
+    /// A scene's `[lem]` read from its table as it now stands.
+    fn scene_lem(&self) -> Result<Option<SceneLem>, toml::de::Error> {
+        match self {
+            Source::Scene { lem: Some(lem), .. } => toml::Value::Table(lem.clone()).try_into().map(Some),
+            _ => Ok(None),
+        }
     }
-    let points = ground.iter().map(|p| toml::Value::Array(vec![p[0].into(), p[1].into()])).collect();
-    section.insert("ground".into(), toml::Value::Array(points));
-    if !section.contains_key("lower_bound") {
-        section.entry("z_min").or_insert(z_min.into());
+
+    fn number(&mut self, key: &str) -> Result<Number<'_>, keys::UnknownKey> {
+        match self {
+            Source::Scene { lem: Some(lem), .. } if key.starts_with("lem.") => {
+                keys::table_number(lem, &key["lem.".len()..])
+                    .map(Number::Toml)
+                    .map_err(|_| keys::UnknownKey { key: key.to_string() })
+            }
+            Source::Scene { scene, .. } => keys::scene_number(scene, key).map(Number::Real),
+            Source::Lem(parts) => parts.number(key).map(Number::Real),
+        }
     }
-    Ok(())
 }
 
 /// A standard normal variate (Box-Muller, the cosine branch; two uniforms per draw).
@@ -335,8 +391,10 @@ pub fn mean_critical_circle(input: &EnsembleInput) -> crate::Result<Option<lem::
     if !input.analyses.contains(&Analysis::Lem) || input.spec.lem_surface == LemSurface::Search {
         return Ok(None);
     }
-    let text = toml::to_string(&input.table).map_err(|e| Error::io(&input.path, std::io::Error::other(e)))?;
-    let lem_input = lem_input_of(input, &text)?;
+    let lem_input = match &input.source {
+        Source::Scene { scene, .. } => super::lem::scene_lem_input(scene)?,
+        Source::Lem(parts) => parts.input()?,
+    };
     if let Mode::Circle(c) = lem_input.mode {
         return Ok(Some(c));
     }
@@ -348,14 +406,6 @@ pub fn mean_critical_circle(input: &EnsembleInput) -> crate::Result<Option<lem::
     Ok(Some(c.circle))
 }
 
-fn lem_input_of(input: &EnsembleInput, text: &str) -> crate::Result<LemInput> {
-    if input.is_scene {
-        super::lem::scene_lem_input(&Scene::from_toml(text, &input.base_dir, &input.path)?)
-    } else {
-        LemInput::from_toml(text, &input.base_dir, &input.path)
-    }
-}
-
 /// Runs member `k`. `circle`: the mean critical circle (LEM on it), or None (a search).
 pub fn run_member(
     input: &EnsembleInput,
@@ -363,7 +413,7 @@ pub fn run_member(
     k: usize,
     circle: Option<lem::Circle>,
 ) -> crate::Result<MemberRecord> {
-    let (text, seed, draws) = input.member_text(base, k)?;
+    let (seed, draws) = input.draws(base, k)?;
     let member_error = |e: Error| match e {
         Error::Scene(SceneError::Invalid { key, reason }) => {
             Error::Scene(SceneError::invalid(key, format!("{reason} (ensemble member {k}, draws {draws:?})")))
@@ -371,8 +421,9 @@ pub fn run_member(
         other => other,
     };
     let mut record = MemberRecord { member: k, seed, draws: draws.clone(), fs: None, lem: None, cdem: None, srm: None };
+    let member = input.member_input(seed, &draws).map_err(member_error)?;
     if input.analyses.contains(&Analysis::Lem) {
-        let mut lem_input = lem_input_of(input, &text).map_err(member_error)?;
+        let mut lem_input = member.lem_input().map_err(member_error)?;
         if let Some(c) = circle {
             lem_input.mode = Mode::Circle(c);
         }
@@ -394,15 +445,16 @@ pub fn run_member(
             });
         }
     }
-    let scene = if input.analyses.iter().any(|a| matches!(a, Analysis::Cdem | Analysis::Srm)) {
-        Some(Scene::from_toml(&text, &input.base_dir, &input.path).map_err(|e| member_error(e.into()))?)
-    } else {
-        None
+    let scene = match &member {
+        MemberInput::Scene(scene) if input.analyses.iter().any(|a| matches!(a, Analysis::Cdem | Analysis::Srm)) => {
+            Some(scene)
+        }
+        _ => None,
     };
     if let (true, Some(scene)) = (input.analyses.contains(&Analysis::Cdem), &scene) {
         // Eq. 21 on the mean critical circle, as the LEM (`lem_surface = "critical"`),
         // unless the scene names its own circle.
-        let mut scene = scene.clone();
+        let mut scene = (**scene).clone();
         if let (Some(a), Some(c)) = (scene.analysis.as_mut(), circle) {
             a.circle.get_or_insert(c);
         }
@@ -471,171 +523,4 @@ pub fn run_members(
         progress(out.len());
     }
     Ok(out)
-}
-
-/// What `ensemble.json` holds.
-#[derive(Debug, Clone, Serialize)]
-pub struct EnsembleSummary {
-    pub input: String,
-    pub members: usize,
-    pub seed: u64,
-    pub analyses: Vec<Analysis>,
-    pub lem_surface: Option<LemSurface>,
-    /// The mean critical circle (xc, zc, r) the members were evaluated on.
-    pub lem_circle: Option<[f64; 3]>,
-    pub fs_source: Option<&'static str>,
-    /// Members without an FS (an inadmissible circle, no Bishop root).
-    pub members_without_fs: usize,
-    pub fs: Option<Stats>,
-    pub reliability: Option<Reliability>,
-    pub convergence: Vec<ConvergencePoint>,
-    /// Statistics of each random variable's draws.
-    pub draws: Vec<(String, Stats)>,
-    pub elastic_max_abs_u: Option<Stats>,
-    /// Eq. 21 K of the members with `[analysis]` (`CdemMember::eq21_k`).
-    pub eq21_k: Option<Stats>,
-    /// `P(K < 1)` and the reliability indices of eq. 21 K: a stress-based
-    /// probability beside the FS's.
-    pub eq21_reliability: Option<Reliability>,
-    /// Members per phase-2 end state.
-    pub end_states: Vec<(EndState, usize)>,
-}
-
-/// The statistics of complete records (member order).
-pub fn aggregate(
-    input: &str,
-    seed: u64,
-    analyses: &[Analysis],
-    lem_surface: Option<LemSurface>,
-    lem_circle: Option<lem::Circle>,
-    records: &[MemberRecord],
-) -> EnsembleSummary {
-    let fs: Vec<f64> = records.iter().filter_map(|r| r.fs).collect();
-    let keys: Vec<String> = records.first().map_or(Vec::new(), |r| r.draws.iter().map(|d| d.key.clone()).collect());
-    let draws = keys
-        .iter()
-        .enumerate()
-        .filter_map(|(i, k)| {
-            let v: Vec<f64> = records.iter().map(|r| r.draws[i].value).collect();
-            stats::distribution(&v).map(|d| (k.clone(), d))
-        })
-        .collect();
-    let u: Vec<f64> = records.iter().filter_map(|r| r.cdem.as_ref().map(|c| c.elastic_max_abs_u)).collect();
-    let k: Vec<f64> = records.iter().filter_map(|r| r.cdem.as_ref().and_then(|c| c.eq21_k)).collect();
-    let mut end_states = Vec::new();
-    for e in [EndState::Equilibrium, EndState::GlobalSliding, EndState::Undecided] {
-        let n = records.iter().filter(|r| r.cdem.as_ref().and_then(|c| c.end_state) == Some(e)).count();
-        if n > 0 {
-            end_states.push((e, n));
-        }
-    }
-    let has_lem = analyses.contains(&Analysis::Lem);
-    EnsembleSummary {
-        input: input.to_string(),
-        members: records.len(),
-        seed,
-        analyses: analyses.to_vec(),
-        lem_surface: lem_surface.filter(|_| has_lem),
-        lem_circle: lem_circle.map(|c| [c.xc, c.zc, c.r]),
-        fs_source: if analyses.contains(&Analysis::Srm) {
-            Some("strength reduction (cdem srm)")
-        } else {
-            has_lem.then_some("LEM Bishop simplified (else Spencer, else ordinary)")
-        },
-        members_without_fs: records.len() - fs.len(),
-        fs: stats::distribution(&fs),
-        reliability: stats::reliability(&fs),
-        convergence: if fs.is_empty() { Vec::new() } else { stats::convergence(&fs) },
-        draws,
-        elastic_max_abs_u: stats::distribution(&u),
-        eq21_k: stats::distribution(&k),
-        eq21_reliability: stats::reliability(&k),
-        end_states,
-    }
-}
-
-/// `shard-I-of-N.json`: what a shard ran, for `cdem ensemble merge`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct ShardInfo {
-    pub input: String,
-    pub digest: String,
-    pub members: usize,
-    pub seed: u64,
-    pub shard: [usize; 2],
-    pub first: usize,
-    pub end: usize,
-    pub wall_s: f64,
-    pub threads: usize,
-}
-
-/// Member records from shard directories, checked to be one complete
-/// ensemble: same input and seed, every member exactly once; each with its
-/// JSON line as the shard wrote it.
-pub fn merge_shards(dirs: &[PathBuf]) -> crate::Result<(ShardInfo, Vec<(MemberRecord, String)>)> {
-    let mut infos: Vec<ShardInfo> = Vec::new();
-    // Each record with its line as written: the merged file repeats the lines.
-    let mut records: Vec<(MemberRecord, String)> = Vec::new();
-    let invalid = |key: &str, reason: String| Error::from(SceneError::invalid(key, reason));
-    for dir in dirs {
-        let entries = std::fs::read_dir(dir).map_err(|e| Error::io(dir, e))?;
-        let mut names: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
-        names.sort();
-        for p in names {
-            let name = p.file_name().and_then(|n| n.to_str()).unwrap_or("");
-            if name.starts_with("shard-") && name.ends_with(".json") {
-                let text = std::fs::read_to_string(&p).map_err(|e| Error::io(&p, e))?;
-                let info: ShardInfo = serde_json::from_str(&text)
-                    .map_err(|e| invalid("merge", format!("{}: not a shard record: {e}", p.display())))?;
-                let jsonl = p.with_file_name(name.replace("shard-", "members-").replace(".json", ".jsonl"));
-                let text = std::fs::read_to_string(&jsonl).map_err(|e| Error::io(&jsonl, e))?;
-                for (line, l) in text.lines().enumerate() {
-                    let r: MemberRecord = serde_json::from_str(l)
-                        .map_err(|e| invalid("merge", format!("{} line {}: {e}", jsonl.display(), line + 1)))?;
-                    records.push((r, l.to_string()));
-                }
-                infos.push(info);
-            }
-        }
-    }
-    let Some(first) = infos.first().cloned() else {
-        return Err(invalid("merge", format!("no shard-*.json in {dirs:?}")));
-    };
-    for i in &infos {
-        if (i.digest.as_str(), i.members, i.seed) != (first.digest.as_str(), first.members, first.seed) {
-            return Err(invalid(
-                "merge",
-                format!(
-                    "shard {}/{} ran {} (seed {}, {} members), shard {}/{} ran {} (seed {}, {} members)",
-                    first.shard[0],
-                    first.shard[1],
-                    first.input,
-                    first.seed,
-                    first.members,
-                    i.shard[0],
-                    i.shard[1],
-                    i.input,
-                    i.seed,
-                    i.members
-                ),
-            ));
-        }
-    }
-    records.sort_by_key(|r| r.0.member);
-    for (k, (r, _)) in records.iter().enumerate() {
-        if r.member != k {
-            let what = if r.member < k { "twice" } else { "missing" };
-            let m = if r.member < k { r.member } else { k };
-            return Err(invalid("merge", format!("member {m} is {what} (merging {} shards)", infos.len())));
-        }
-    }
-    if records.len() != first.members {
-        return Err(invalid("merge", format!("{} of {} members present", records.len(), first.members)));
-    }
-    let wall: f64 = infos.iter().map(|i| i.wall_s).sum();
-    Ok((ShardInfo { shard: [0, 1], first: 0, end: first.members, wall_s: wall, ..first }, records))
-}
-
-/// The digest as text (JSON numbers lose bits above 2^53).
-pub fn digest_hex(d: u64) -> String {
-    format!("{d:016x}")
 }

@@ -6,12 +6,12 @@
 
 use std::path::Path;
 
+use super::plot::{slip_profile, Patch, Series, SlipProfile, Span};
+use super::section::{front_patches, front_patches_of_cells};
 use crate::analysis::SurfacePoint;
 use crate::drivers::analysis::Factors;
 use crate::drivers::{AnalysisReport, FemRun, RunResult};
 use crate::error::Error;
-use crate::harness::figures::{slip_profile, Patch, Series, SlipProfile, Span};
-use crate::harness::section::{front_patches, front_patches_of_cells};
 
 /// The window of K_i shown: K_i = R_i / D_i runs off where D_i changes sign.
 const K_WINDOW: (f64, f64) = (-3.0, 6.0);

@@ -1,0 +1,73 @@
+//! The application layer (feature `plot`): one function per product command
+//! (`cdem run`, `srm`, `fem`, `lem`, `ensemble`) that loads the input, calls
+//! the drivers, writes the files through [`crate::output`] (figures
+//! included) and returns what the command line prints. The command line
+//! (`src/bin/cdem.rs`) keeps the argument parsing, the progress bars and the
+//! printing; the verification harness sits above this layer.
+
+pub mod ensemble;
+
+use std::path::{Path, PathBuf};
+
+use crate::drivers::{FemRun, RunResult, SrmProgress, SrmResult};
+use crate::lem::LemResult;
+use crate::output::figures;
+use crate::scene::Scene;
+
+/// What `cdem run` reports while it runs.
+pub enum RunProgress {
+    /// The scene is loaded: the step budget of phase 1 and phase 2 as the
+    /// scene gives them (0 where the solver chooses).
+    Loaded { budget: usize },
+    /// A step and its unbalanced-force ratio.
+    Step { step: usize, ratio: f64 },
+}
+
+/// `cdem run SCENE --out DIR`: phase 1 and, for a scene with `[failure]`,
+/// phase 2; writes the run's files and, with `[analysis]`, `analysis.png`.
+pub fn run(scene_path: &Path, out: &Path, progress: &mut dyn FnMut(RunProgress)) -> crate::Result<RunResult> {
+    let scene = Scene::load(scene_path)?;
+    let budget = scene.solver.max_steps.unwrap_or(0) + scene.failure.as_ref().map_or(0, |f| f.max_steps.unwrap_or(0));
+    progress(RunProgress::Loaded { budget });
+    let result = crate::drivers::run_scene(&scene, &mut |step, ratio| progress(RunProgress::Step { step, ratio }))?;
+    crate::output::write_run(&scene, &result, out)?;
+    if result.surface.is_some() {
+        figures::analysis::run_png(&result, &out.join("analysis.png"))?;
+    }
+    Ok(result)
+}
+
+/// `cdem srm SCENE --out DIR`: strength reduction; writes `srm.json`,
+/// `mechanism.vtu` and `mechanism.png`.
+pub fn srm(scene_path: &Path, out: &Path, progress: &mut dyn FnMut(SrmProgress)) -> crate::Result<SrmResult> {
+    let scene = Scene::load(scene_path)?;
+    let (result, model) = crate::drivers::run_srm(&scene, progress)?;
+    crate::output::write_srm(&result, &model, out)?;
+    figures::mechanism::mechanism_png(&result, &model, &out.join("mechanism.png"))?;
+    Ok(result)
+}
+
+/// `cdem fem SCENE --out DIR`: the implicit FEM reference on the continuous
+/// mesh; writes its files and, with `[analysis]`, `analysis.png`.
+pub fn fem(scene_path: &Path, out: &Path) -> crate::Result<FemRun> {
+    let scene = Scene::load(scene_path)?;
+    let fem = crate::drivers::run_fem(&scene)?;
+    crate::output::write_fem(&fem.solution, fem.surface.as_ref(), out)?;
+    if fem.surface.is_some() {
+        figures::analysis::fem_png(&fem, &out.join("analysis.png"))?;
+    }
+    Ok(fem)
+}
+
+/// `cdem lem INPUT [--out FILE]`: the LEM of a LEM file or of a scene's
+/// `[lem]`; writes the JSON (to `out`, or beside the input with extension
+/// `.json`) and returns the result and the path written.
+pub fn lem(input: &Path, out: Option<&Path>) -> crate::Result<(LemResult, PathBuf)> {
+    let result = crate::lem::analyse(&crate::drivers::load_lem_input(input)?)?;
+    let out = out.map(Path::to_path_buf).unwrap_or_else(|| input.with_extension("json"));
+    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).map_err(|e| crate::Error::io(dir, e))?;
+    }
+    crate::output::write_json(&out, &result)?;
+    Ok((result, out))
+}
