@@ -18,7 +18,7 @@
 //! and compares with the committed baseline `references/perf/instructions.json`.
 //!
 //! Needs valgrind and `gungraun-runner` of the same version as the library
-//! (see the README); run with `cargo bench --features iai --bench instructions`.
+//! (see docs/commands.md, "Instruction counts"); run with `cargo bench --features iai --bench instructions`.
 
 use std::hint::black_box;
 use std::path::Path;

@@ -70,7 +70,7 @@ enum Command {
     /// Performance: step bandwidth against stream, DR against FEM, LEM against pySlope, phase 2
     /// and `cdem srm` on the slip-surface slope, ensembles of it, the damping table and cost
     /// against size (gmsh for refine 7, 10): DIR/perf.md (with the validation rows perf/*) and CSVs.
-    /// Run from the repository root; about 20 minutes with the defaults.
+    /// Run from the repository root; about 20 to 40 minutes with the defaults.
     Perf {
         #[arg(long, default_value = "perf")]
         out: PathBuf,
@@ -85,7 +85,7 @@ enum Command {
         /// Skip the damping table (about 3 minutes).
         #[arg(long)]
         no_damping: bool,
-        /// Skip `cdem srm` on the slip-surface slope, brittle and ductile (about 15 s and 90 s);
+        /// Skip `cdem srm` on the slip-surface slope, brittle and ductile (about 12 s and 28 s, references/performance.md);
         /// phase 2 to a decision (node-block against lumped masses, a few seconds) always runs.
         #[arg(long)]
         no_srm: bool,
