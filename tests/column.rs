@@ -30,13 +30,17 @@ fn column_with_stiff_springs_within_one_percent() {
         println!("springs: {} {:.5e} (exact {:.5e}, err {:.2e})", c.quantity, c.ours, c.reference, c.rel_error());
     }
     cdem::harness::report::record("column_springs", &rows);
-    // Top u_z: within 1 % (the joints' series compliance, references/column.md).
+    // Top u_z: within 1 % of the continuum (the joints' series compliance,
+    // references/column.md), and within 2e-4 of the joints in series.
     let err_u = ((measured_top_uz(&r) - column_uz(H)) / column_uz(H)).abs();
     assert!(err_u < reg::TOL_COLUMN_SPRINGS, "top displacement off by {:.3} %", 100.0 * err_u);
+    let jointed = reg::column_top_uz_jointed(1e11);
+    let err_j = ((measured_top_uz(&r) - jointed) / jointed).abs();
+    assert!(err_j < reg::TOL_COLUMN_SERIES_JOINTS, "top displacement off the jointed column by {err_j:.2e}");
     // Stresses: statically determinate, so independent of the joints: to the
     // convergence tolerance.
     let err_base = ((column_base_stress(&r) - column_szz(0.0)) / column_szz(0.0)).abs();
-    assert!(err_base < reg::TOL_COLUMN_STRESS, "base stress off by {err_base:.2e}");
+    assert!(err_base < reg::TOL_COLUMN_REACTION, "base stress off by {err_base:.2e}");
     let err_el = column_element_stress_error(&r);
     assert!(err_el < reg::TOL_COLUMN_STRESS, "element stress off by {err_el:.2e}");
     assert!(rows.iter().all(|c| c.passed()), "{rows:?}");
@@ -75,5 +79,6 @@ fn column_with_merged_interfaces_is_exact_to_solver_tolerance() {
     );
     cdem::harness::report::record("column_merged", &[column_merged_row(&r)]);
     assert!(err < reg::TOL_COLUMN_MERGED, "top displacement off by {err:.2e}");
-    assert!(column_element_stress_error(&r) < reg::TOL_COLUMN_MERGED);
+    // Not a row: the merged column's element stresses (measured 1.5e-9).
+    assert!(column_element_stress_error(&r) < 1e-8);
 }

@@ -1,0 +1,91 @@
+//! The numbers references/ quotes from the registry are the registry's: every
+//! Markdown table row under references/ whose first cell is a row id of the
+//! validation table (`` `column/springs/top-uz` ``) must state that row's
+//! kind (asserted / reported) and its tolerance or goal as the registry
+//! holds them (`src/harness/registry.rs`), so a tolerance changed in code
+//! cannot leave a stale one in the text that justifies it.
+
+use cdem::harness::registry as reg;
+use cdem::harness::report::{Goal, RowSpec, SpecKind};
+
+/// The first number of a cell, with its unit: "0.5 % (`TOL`)" -> 0.005,
+/// "2e-4" -> 2e-4, "goal 2 %" -> 0.02.
+fn quoted_number(cell: &str) -> Option<f64> {
+    let start = cell.find(|c: char| c.is_ascii_digit())?;
+    let rest = &cell[start..];
+    let end = rest.find(|c: char| !(c.is_ascii_digit() || c == '.' || c == 'e' || c == '-')).unwrap_or(rest.len());
+    let v: f64 = rest[..end].trim_end_matches(['e', '-', '.']).parse().ok()?;
+    Some(if rest[end..].trim_start().starts_with('%') { v / 100.0 } else { v })
+}
+
+/// The registry's bound of a row and its kind word, if it has a numeric one.
+fn bound(spec: &RowSpec) -> Option<(f64, &'static str)> {
+    match spec.kind {
+        SpecKind::Asserted(t) => Some((t, "asserted")),
+        SpecKind::Reported(Goal::Within(t)) => Some((t, "reported")),
+        _ => None,
+    }
+}
+
+/// `(file, line, row id, cells)` of every table row quoting a registry row id.
+fn quoting_rows() -> Vec<(String, usize, &'static RowSpec, Vec<String>)> {
+    let rows: &'static [RowSpec] = Box::leak(reg::rows().into_boxed_slice());
+    let mut out = Vec::new();
+    let mut files: Vec<_> = std::fs::read_dir("references")
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|e| e == "md"))
+        .collect();
+    files.sort();
+    for path in files {
+        let text = std::fs::read_to_string(&path).unwrap();
+        for (n, line) in text.lines().enumerate() {
+            let cells: Vec<String> = line.trim().trim_matches('|').split('|').map(|c| c.trim().to_string()).collect();
+            if !line.trim_start().starts_with('|') || cells.len() < 3 {
+                continue;
+            }
+            let id = cells[0].trim_matches('`');
+            if let Some(spec) = rows.iter().find(|s| s.id == id && cells[0].starts_with('`')) {
+                out.push((path.display().to_string(), n + 1, spec, cells));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn every_tolerance_quoted_in_references_is_the_registrys() {
+    let quotes = quoting_rows();
+    assert!(quotes.len() >= 10, "the references quote registry rows in tables: found {}", quotes.len());
+    let mut wrong = Vec::new();
+    for (file, line, spec, cells) in &quotes {
+        let Some((tol, kind)) = bound(spec) else { continue };
+        // The cell that names the kind, and the cell before it with the bound.
+        let Some(k) = cells.iter().position(|c| c == "asserted" || c == "reported") else {
+            wrong.push(format!("{file}:{line}: `{}` quoted without its kind (asserted / reported)", spec.id));
+            continue;
+        };
+        if cells[k] != kind {
+            wrong.push(format!("{file}:{line}: `{}` is {kind} in the registry, the text says {}", spec.id, cells[k]));
+        }
+        match quoted_number(&cells[k - 1]) {
+            Some(q) if ((q - tol) / tol).abs() < 1e-9 => {}
+            q => wrong.push(format!(
+                "{file}:{line}: `{}` has tolerance {tol:e} in the registry, the text quotes {q:?} (`{}`)",
+                spec.id,
+                cells[k - 1]
+            )),
+        }
+    }
+    assert!(wrong.is_empty(), "references/ out of date with the registry:\n{}", wrong.join("\n"));
+}
+
+#[test]
+fn the_quote_reader_reads_percent_and_exponents() {
+    assert_eq!(quoted_number("0.5 % (`TOL_EQ21_CDEM_VS_FEM`)"), Some(0.005));
+    assert_eq!(quoted_number("goal 2 %"), Some(0.02));
+    assert_eq!(quoted_number("2e-4 (`TOL_COLUMN_SERIES_JOINTS`)"), Some(2e-4));
+    assert_eq!(quoted_number("5e-14"), Some(5e-14));
+    assert_eq!(quoted_number("asserted"), None);
+}
