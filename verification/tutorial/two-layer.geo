@@ -13,8 +13,8 @@
 // The slope face rises at 45 deg from the toe (15,10) to the crest (30,25),
 // 15 m high. The seam is a bedding plane dipping 20 deg out of the slope
 // (toward -x): it daylights in the face 5 m above the toe and reaches the
-// crest at x = 47.5 m. Above it: the softer upper layer ("upper", a wedge of
-// 87.5 m^2); below it: the stiffer lower layer ("lower"). The seam is the
+// crest at x = 47.47 m. Above it: the softer upper layer ("upper", a wedge of
+// 87.37 m^2); below it: the stiffer lower layer ("lower"). The seam is the
 // surface group "seam", an interface between the two that the scene makes
 // breakable. Units m.
 Mesh.MshFileVersion = 4.1;
