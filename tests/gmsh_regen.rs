@@ -1,6 +1,6 @@
 //! Every committed case mesh is what its `.geo` makes: gmsh regenerates each
-//! `verification/cases/*/*.geo`, `verification/extreme/*.geo` and
-//! `verification/study/*.geo` (every
+//! `verification/cases/*/*.geo`, `verification/extreme/*.geo`,
+//! `verification/study/*.geo` and `verification/tutorial/*.geo` (every
 //! `.geo` with a committed `.msh` beside it) into a temporary directory and the result must
 //! equal the committed `.msh` (connectivity, tags and groups exactly, node
 //! coordinates within 1e-9 of the model size). Without gmsh on PATH the test
@@ -15,7 +15,7 @@ use cdem::Error;
 
 fn case_geos() -> Vec<PathBuf> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("verification");
-    let mut dirs = vec![root.join("extreme"), root.join("study")];
+    let mut dirs = vec![root.join("extreme"), root.join("study"), root.join("tutorial")];
     for case in std::fs::read_dir(root.join("cases")).expect("verification/cases exists") {
         dirs.push(case.expect("readable directory entry").path());
     }
