@@ -1,26 +1,66 @@
-//! Mutations of the validation table (issue 18): each one must make the
-//! table fail or show `not met`. The table logic is the one of
+//! Mutations of the validation table (issues 18 and 27): each one must make
+//! the table fail or show `not met`; issue 27's loopholes (a re-kinded row, a
+//! loosened tolerance, another reference, a skipped asserted row, a stale
+//! input digest, a row from another invocation) each fail it. The table logic is the one of
 //! tests/zz_validation_report.rs and `cdem reproduce`
 //! (`cdem::harness::report::Table`); the rows here are made from the
 //! registry's specs, not recorded (this test writes only to a temporary
 //! directory). The non-converging extreme case is in tests/extreme.rs
 //! (`a_case_that_does_not_converge_fails_its_row`).
 
-use std::path::PathBuf;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
 
 use cdem::harness::registry as reg;
-use cdem::harness::report::{record_into, take_recorded, Check, Kind, RowSpec, SpecKind, Status, Table};
+use cdem::harness::report::{
+    inputs, record_into, record_with, take_recorded, take_recorded_with, Check, Freshness, Goal, Kind, Recorded,
+    RowSpec, Rules, Skips, SpecKind, Status, Table,
+};
 
-/// A row of `spec` that passes: the reference itself, or a match.
+/// A row of `spec` that passes: the reference itself (the spec's, if it
+/// holds one), or a match.
 fn passing(spec: &RowSpec) -> Check {
     match spec.kind {
         SpecKind::Compared(_) => spec.compared("same", "same", true, 0.0),
-        _ => spec.value(2.0, 2.0, 0.0),
+        _ => {
+            let r = spec.reference.unwrap_or(2.0);
+            spec.value(r, r, 0.0)
+        }
     }
 }
 
+fn all_passing() -> Vec<Check> {
+    reg::rows().iter().map(passing).collect()
+}
+
+/// The table under the rules of `cargo test`'s report, `CI=true` or not.
+fn table_ci(rows: Vec<Check>, ci: bool) -> Table {
+    let rules = Rules {
+        stale: &BTreeMap::new(),
+        absent: &|s| format!("not recorded by {}", s.test),
+        skips: Skips::Registry { ci, also: &[] },
+    };
+    Table::assemble_with(&reg::rows(), rows, &rules)
+}
+
 fn table(rows: Vec<Check>) -> Table {
-    Table::assemble(&reg::rows(), rows, &[], &|s| format!("not recorded by {}", s.test))
+    table_ci(rows, false)
+}
+
+/// The rows with row `id` replaced by `f` of its passing row.
+fn with(id: &str, f: impl Fn(Check) -> Check) -> Vec<Check> {
+    all_passing().into_iter().map(|c| if c.id == id { f(c) } else { c }).collect()
+}
+
+/// The one failing row of `t`: its id, status and note.
+fn only_failure(t: &Table) -> (String, Status, String) {
+    let failing: Vec<_> = t.rows.iter().filter(|r| r.1.fails()).collect();
+    assert_eq!(failing.len(), 1, "{:?}", t.failures());
+    (failing[0].0.id.clone(), failing[0].1, failing[0].0.note.clone())
+}
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
 fn temp_dir(tag: &str) -> PathBuf {
@@ -111,33 +151,23 @@ fn a_row_recorded_twice_fails() {
 }
 
 /// Recorded rows are taken once: a second report sees none (so a row from
-/// an earlier run can never pass for a fresh one), and a row whose writer
-/// was rebuilt since is stale.
+/// an earlier run can never pass for a fresh one); an unreadable row file is
+/// listed.
 #[test]
-fn recorded_rows_are_taken_once_and_rows_of_a_rebuilt_writer_are_stale() {
+fn recorded_rows_are_taken_once() {
     let dir = temp_dir("take");
     let rows_dir = dir.join("rows");
-    let all: Vec<Check> = reg::rows().iter().map(passing).collect();
+    let all = all_passing();
     record_into(&rows_dir, "all", &all).unwrap();
     let first = take_recorded(&rows_dir);
-    assert!(first.stale.is_empty() && first.unreadable.is_empty());
-    let t = Table::assemble(&reg::rows(), first.rows, &first.stale, &|_| String::new());
+    assert!(first.stale.is_empty() && first.unreadable.is_empty(), "{:?}", first.stale);
+    let t = Table::of_recorded(&reg::rows(), &first, &|_| String::new());
     assert!(t.failures().is_empty(), "{:?}", t.failures());
     let second = take_recorded(&rows_dir);
     assert!(second.rows.is_empty(), "the rows were moved aside");
-    assert_eq!(Table::assemble(&reg::rows(), second.rows, &[], &|_| String::new()).failures().len(), reg::rows().len());
-
-    // A row file whose writer has another modification time than recorded.
-    let writer = dir.join("writer");
-    std::fs::write(&writer, "a test binary").unwrap();
-    let file = serde_json::json!({ "writer": writer.display().to_string(), "writer_modified_ns": 1u64, "rows": all });
-    std::fs::write(rows_dir.join("old.json"), file.to_string()).unwrap();
+    assert_eq!(Table::of_recorded(&reg::rows(), &second, &|_| String::new()).failures().len(), reg::rows().len());
     std::fs::write(rows_dir.join("broken.json"), "{ not json").unwrap();
-    let third = take_recorded(&rows_dir);
-    assert_eq!(third.stale.len(), all.len());
-    assert_eq!(third.unreadable.len(), 1, "{:?}", third.unreadable);
-    let t = Table::assemble(&reg::rows(), third.rows, &third.stale, &|_| String::new());
-    assert!(t.rows.iter().all(|r| r.1 == Status::Stale), "every row is stale");
+    assert_eq!(take_recorded(&rows_dir).unreadable.len(), 1);
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -150,4 +180,199 @@ fn a_skipped_row_is_shown_with_its_reason() {
     let t = table(rows);
     assert!(t.failures().is_empty());
     assert!(t.markdown().contains("skipped: gmsh is not on PATH"), "{}", t.markdown());
+}
+
+// ---------------------------------------------------------------------------
+// Issue 27: the report enforces the registry.
+
+/// An asserted row recorded as reported (it would never fail) is a spec mismatch.
+#[test]
+fn a_re_kinded_row_fails_as_spec_mismatch() {
+    let id = "lem/acads/bishop-vs-slide";
+    let t = table(with(id, |c| Check { kind: Kind::Reported { goal: Goal::Within(reg::TOL_ACADS) }, ..c }));
+    let (failed, status, note) = only_failure(&t);
+    assert_eq!((failed.as_str(), status), (id, Status::SpecMismatch), "{note}");
+    assert!(note.contains("kind"), "{note}");
+    assert!(t.markdown().contains("FAIL: spec mismatch"));
+}
+
+/// An asserted row recorded with a looser tolerance is a spec mismatch, even
+/// though its error is within the looser one (and within the spec's).
+#[test]
+fn a_loosened_tolerance_fails_as_spec_mismatch() {
+    let id = "column/merged/top-uz";
+    let t = table(with(id, |c| Check { kind: Kind::Asserted { tolerance: 10.0 * reg::TOL_COLUMN_MERGED }, ..c }));
+    assert_eq!(only_failure(&t).0, id);
+    assert_eq!(only_failure(&t).1, Status::SpecMismatch);
+    // A reported row's goal, likewise.
+    let id = "slope/cdem-vs-paper/max-abs-uz";
+    let t = table(with(id, |c| Check { kind: Kind::Reported { goal: Goal::Within(0.5) }, ..c }));
+    assert_eq!((only_failure(&t).0.as_str(), only_failure(&t).1), (id, Status::SpecMismatch));
+}
+
+/// A row compared with another reference than the registry's (ours set as
+/// the reference: error 0) is a spec mismatch; so is another source.
+#[test]
+fn another_reference_or_source_fails_as_spec_mismatch() {
+    let id = "lem/acads/spencer-vs-referee";
+    let t = table(with(id, |_| reg::row(id).value(0.98407, 0.98407, 0.0)));
+    let (failed, status, note) = only_failure(&t);
+    assert_eq!((failed.as_str(), status), (id, Status::SpecMismatch));
+    assert!(note.contains("reference"), "{note}");
+    let t = table(with(id, |c| Check { source: "references/column.md".into(), ..c }));
+    assert_eq!(only_failure(&t).1, Status::SpecMismatch);
+}
+
+/// An asserted row recorded as skipped fails; a row whose spec allows a skip
+/// does not, except an asserted one under `CI=true`.
+#[test]
+fn a_skipped_asserted_row_fails() {
+    let id = "column/merged/top-uz";
+    let t = table(with(id, |_| reg::row(id).skipped("no time")));
+    let (failed, status, note) = only_failure(&t);
+    assert_eq!((failed.as_str(), status), (id, Status::SkipRefused));
+    assert!(note.contains("does not allow a skip"), "{note}");
+    // A reported row whose spec does not allow a skip fails too.
+    let t = table(with("perf/bandwidth", |_| reg::row("perf/bandwidth").skipped("no time")));
+    assert_eq!(only_failure(&t).1, Status::SkipRefused);
+    // meshes/regenerated (an asserted comparison) may be skipped outside CI, never in it.
+    let gmsh = || with("meshes/regenerated", |_| reg::row("meshes/regenerated").skipped("gmsh is not on PATH"));
+    assert!(table(gmsh()).failures().is_empty());
+    let (failed, status, note) = only_failure(&table_ci(gmsh(), true));
+    assert_eq!((failed.as_str(), status), ("meshes/regenerated", Status::SkipRefused));
+    assert!(note.contains("CI=true"), "{note}");
+    // The timed SRM rows (reported) may be skipped in CI too.
+    let srm = cdem::harness::perf::rows::srm_perf_skipped("measured by cdem perf");
+    let rows: Vec<Check> =
+        all_passing().into_iter().map(|c| srm.iter().find(|s| s.id == c.id).cloned().unwrap_or(c)).collect();
+    assert!(table_ci(rows, true).failures().is_empty());
+}
+
+// ---------------------------------------------------------------------------
+// Issue 27: freshness by content and invocation.
+
+/// A copy of the repository's declared input files (of every row) under a
+/// temporary root.
+fn copy_inputs(dir: &Path) -> PathBuf {
+    let copy = dir.join("root");
+    for spec in reg::rows() {
+        for f in inputs::declared(spec.id, spec.source, root()).unwrap() {
+            let to = copy.join(&f);
+            std::fs::create_dir_all(to.parent().unwrap()).unwrap();
+            std::fs::copy(root().join(&f), &to).unwrap_or_else(|e| panic!("{f}: {e}"));
+        }
+    }
+    copy
+}
+
+fn fresh(root: &Path, invocation: &str) -> Freshness {
+    Freshness { root: root.to_path_buf(), invocation: Some(invocation.into()) }
+}
+
+fn assembled(recorded: &Recorded) -> Table {
+    Table::of_recorded(&reg::rows(), recorded, &|_| String::new())
+}
+
+/// The positive case: every row recorded by this invocation from the input
+/// files as they are passes (also through a copy of the inputs).
+#[test]
+fn fresh_rows_of_this_invocation_pass() {
+    let dir = temp_dir("fresh");
+    let copy = copy_inputs(&dir);
+    record_with(&dir.join("rows"), &fresh(&copy, "run 1"), "all", &all_passing()).unwrap();
+    let recorded = take_recorded_with(&dir.join("rows"), &fresh(&copy, "run 1"));
+    assert!(recorded.stale.is_empty(), "{:?}", recorded.stale);
+    let t = assembled(&recorded);
+    assert!(t.failures().is_empty(), "{:?}", t.failures());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// An input file changed after its rows were recorded: they are stale; a
+/// deleted input fails its rows too (fail closed).
+#[test]
+fn a_stale_input_digest_fails() {
+    let dir = temp_dir("digest");
+    let copy = copy_inputs(&dir);
+    let run = fresh(&copy, "run 1");
+    record_with(&dir.join("rows"), &run, "all", &all_passing()).unwrap();
+    let scene = copy.join(reg::COLUMN_MERGED.input);
+    let mut text = std::fs::read_to_string(&scene).unwrap();
+    text.push_str("\n# changed after the rows were recorded\n");
+    std::fs::write(&scene, text).unwrap();
+    let t = assembled(&take_recorded_with(&dir.join("rows"), &run));
+    let stale: Vec<_> = t.rows.iter().filter(|r| r.1.fails()).collect();
+    assert!(!stale.is_empty());
+    for (c, s) in &stale {
+        assert_eq!(*s, Status::Stale, "{}", c.id);
+        assert!(c.note.contains("inputs changed since it was computed"), "{}", c.note);
+        assert!(c.note.contains(reg::COLUMN_MERGED.input), "{}", c.note);
+    }
+    // The column-merged rows, and the FEM cross-check on the same scene.
+    let ids: Vec<&str> = stale.iter().map(|r| r.0.id.as_str()).collect();
+    assert!(ids.contains(&"column/merged/top-uz") && ids.contains(&"fem/skfem/column/all"), "{ids:?}");
+    assert!(!ids.contains(&"column/springs/top-uz"), "{ids:?}");
+
+    // A mesh (named by the scene, not declared directly) removed.
+    record_with(&dir.join("rows"), &run, "all", &all_passing()).unwrap();
+    std::fs::remove_file(copy.join("verification/cases/wulong/wulong.msh")).unwrap();
+    let t = assembled(&take_recorded_with(&dir.join("rows"), &run));
+    let (c, s) = t.rows.iter().find(|r| r.0.id == "wulong/no-slide").unwrap();
+    assert_eq!(*s, Status::Stale);
+    assert!(c.note.contains("wulong.msh is missing"), "{}", c.note);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Rows written by another `cargo test` invocation (e.g. left by a partial
+/// run) are stale, every one of them; an unknown invocation accepts none.
+#[test]
+fn a_row_from_another_invocation_fails() {
+    let dir = temp_dir("invocation");
+    record_with(&dir.join("rows"), &fresh(root(), "run 1"), "all", &all_passing()).unwrap();
+    let t = assembled(&take_recorded_with(&dir.join("rows"), &fresh(root(), "run 2")));
+    assert_eq!(t.failures().len(), reg::rows().len());
+    assert!(t.rows.iter().all(|r| r.1 == Status::Stale && r.0.note.contains("from another cargo test run")));
+    record_with(&dir.join("rows"), &fresh(root(), "run 1"), "all", &all_passing()).unwrap();
+    let unknown = Freshness { root: root().to_path_buf(), invocation: None };
+    let t = assembled(&take_recorded_with(&dir.join("rows"), &unknown));
+    assert!(t.rows.iter().all(|r| r.1 == Status::Stale), "{}", t.counts());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Every row of the registry declares its input files, and they exist.
+#[test]
+fn every_row_declares_its_inputs() {
+    for spec in reg::rows() {
+        let files = inputs::declared(spec.id, spec.source, root())
+            .unwrap_or_else(|| panic!("{}: no entry in inputs::DECLARED", spec.id));
+        assert!(!files.is_empty(), "{}: no input files", spec.id);
+        for f in files {
+            assert!(root().join(&f).is_file(), "{}: no {f}", spec.id);
+        }
+    }
+    let slope = reg::row("slope/cdem-vs-fem/l2-u");
+    let slope = inputs::declared(slope.id, slope.source, root()).unwrap();
+    assert!(slope.contains(&"verification/cases/slope/slope.msh".to_string()), "the scene's mesh: {slope:?}");
+}
+
+/// The declared inputs name every case of the registry (they are written
+/// out in `inputs::DECLARED`, not taken from the registry).
+#[test]
+fn every_case_input_is_declared() {
+    let declared: Vec<String> =
+        reg::rows().iter().flat_map(|s| inputs::declared(s.id, s.source, root()).unwrap_or_default()).collect();
+    for case in reg::CASES {
+        assert!(declared.iter().any(|f| f == case.input), "{}: {} is no row's input", case.name, case.input);
+    }
+    for (_, msh) in reg::SLOPE_MESHES.iter().filter(|(r, _)| *r == 1.0) {
+        assert!(declared.iter().any(|f| f == msh), "{msh}");
+    }
+}
+
+/// The report's header: commit, date, command (with the invocation), threads.
+#[test]
+fn the_header_names_commit_date_command_and_threads() {
+    let md = cdem::harness::report::header::RunHeader::cargo_test(root()).markdown();
+    for what in ["- commit: ", "- date: ", " UTC", "- command: `", "(invocation ", "- threads: "] {
+        assert!(md.contains(what), "{what:?} in {md}");
+    }
 }

@@ -12,8 +12,9 @@
 //! - **compared**: a qualitative result against a snapshot or the paper's
 //!   statement: `match` / `differs` (an asserted comparison that differs is a
 //!   `FAIL`);
-//! - **skipped**: a check that cannot run here (gmsh absent outside CI), with
-//!   its reason.
+//! - **skipped**: a check that cannot run here, with its reason; only a row
+//!   whose spec allows it ([`RowSpec::skip`]) may be skipped, and under
+//!   `CI=true` no asserted row may ([`Skips::Registry`]).
 //!
 //! Completeness: every row the table must contain is listed once in the
 //! registry ([`crate::harness::registry::ROWS`], a [`RowSpec`] each). Tests
@@ -21,13 +22,33 @@
 //! with [`record`] (one JSON file per test under `target/validation/rows/`);
 //! the last test binary (`zz_validation_report`) takes them ([`take_recorded`]:
 //! read, then moved aside, so that every row must be written again in the
-//! next run) and [`Table::assemble`] sets each row of the registry against what
-//! was recorded: a missing row, a stale row (written by a test binary that has
-//! been rebuilt since) or a row the registry does not list fails the table.
-//! `cdem reproduce` assembles the same table from its own runs.
+//! next run) and [`Table::assemble_with`] sets each row of the registry
+//! against what was recorded. The table fails on:
+//! - a missing row, a row recorded twice, a row the registry does not list;
+//! - a **spec mismatch**: a recorded row whose case, quantity, source, kind,
+//!   tolerance or goal differ from its spec, or whose reference differs from
+//!   the one the spec holds ([`RowSpec::reference`]): the registry, not the
+//!   row file, says what a row is;
+//! - a skip the spec does not allow;
+//! - a **stale** row ([`freshness`]): written by another `cargo test`
+//!   invocation, or computed from input files (scene, mesh, reference data)
+//!   that have changed since, or whose inputs are missing.
+//!
+//! `cdem reproduce` and `cdem perf` assemble the same table from their own
+//! runs ([`Table::assemble`]); [`header`] gives the commit, date, command and
+//! thread count a report starts with.
 
+pub mod freshness;
+pub mod header;
+pub mod inputs;
+
+pub use freshness::{
+    current_invocation, record, record_into, record_with, rows_dir, take_recorded, take_recorded_with, Freshness,
+    Recorded,
+};
+
+use std::collections::BTreeMap;
 use std::fmt::Write;
-use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize};
 
@@ -69,8 +90,15 @@ pub enum Status {
     Skipped,
     /// Listed in the registry, not recorded in this run.
     Missing,
-    /// Recorded by a test binary that has been rebuilt since.
+    /// Recorded by another `cargo test` invocation, or from input files that
+    /// have changed since (the row's note says which).
     Stale,
+    /// Recorded with another case, quantity, source, kind, tolerance, goal or
+    /// reference than its spec says (the row's note says which).
+    SpecMismatch,
+    /// Skipped, but its spec does not allow a skip (or `CI=true` and the row
+    /// is asserted).
+    SkipRefused,
     /// Recorded, but not listed in the registry.
     Unlisted,
 }
@@ -78,7 +106,15 @@ pub enum Status {
 impl Status {
     /// Whether the row fails the table (and the run).
     pub fn fails(self) -> bool {
-        matches!(self, Status::Fail | Status::Missing | Status::Stale | Status::Unlisted)
+        matches!(
+            self,
+            Status::Fail
+                | Status::Missing
+                | Status::Stale
+                | Status::SpecMismatch
+                | Status::SkipRefused
+                | Status::Unlisted
+        )
     }
     pub fn label(self) -> &'static str {
         match self {
@@ -91,6 +127,8 @@ impl Status {
             Status::Skipped => "skipped",
             Status::Missing => "FAIL: missing",
             Status::Stale => "FAIL: stale",
+            Status::SpecMismatch => "FAIL: spec mismatch",
+            Status::SkipRefused => "FAIL: skip not allowed",
             Status::Unlisted => "FAIL: not in the registry",
         }
     }
@@ -237,9 +275,73 @@ pub struct RowSpec {
     pub source: &'static str,
     /// The test file that records it (`cargo test`).
     pub test: &'static str,
+    /// The reference value, where the registry holds it as a number (a
+    /// published or analytic value, 0 for an error norm): a recorded row with
+    /// another reference is a spec mismatch. `None`: the reference is
+    /// computed by the test (e.g. our FEM on the same mesh) and only kind,
+    /// tolerance or goal, source, case and quantity are compared.
+    pub reference: Option<f64>,
+    /// `Some(reason)`: the row may be skipped, and why (e.g. gmsh not on
+    /// PATH; a timed run only `cdem perf` makes). `None`: a skipped row
+    /// fails. Under `CI=true` an asserted row may never be skipped.
+    pub skip: Option<&'static str>,
 }
 
 impl RowSpec {
+    /// The spec with its reference value ([`RowSpec::reference`]).
+    pub const fn with_reference(mut self, reference: f64) -> Self {
+        self.reference = Some(reference);
+        self
+    }
+    /// The spec of a row that may be skipped, and why ([`RowSpec::skip`]).
+    pub const fn may_skip(mut self, reason: &'static str) -> Self {
+        self.skip = Some(reason);
+        self
+    }
+    /// Whether a failure of the row fails the run (asserted, or an asserted
+    /// comparison).
+    pub fn is_asserted(&self) -> bool {
+        matches!(self.kind, SpecKind::Asserted(_) | SpecKind::Compared(true))
+    }
+    /// How a recorded row differs from this spec (`None`: it does not):
+    /// id, case, quantity and source; the kind with its tolerance or goal
+    /// (bit for bit: row files keep f64 exactly); the reference if the spec
+    /// holds it. A skipped row's kind is judged by [`Skips`], not here.
+    pub fn mismatch(&self, c: &Check) -> Option<String> {
+        let mut diffs = Vec::new();
+        let text = |what: &str, spec: &str, row: &str| format!("{what} {row:?} (the spec: {spec:?})");
+        for (what, spec, row) in [
+            ("id", self.id, c.id.as_str()),
+            ("case", self.case, c.case.as_str()),
+            ("quantity", self.quantity, c.quantity.as_str()),
+            ("source", self.source, c.source.as_str()),
+        ] {
+            if spec != row {
+                diffs.push(text(what, spec, row));
+            }
+        }
+        let same = |a: f64, b: f64| a.to_bits() == b.to_bits();
+        let kind_ok = match (&self.kind, &c.kind) {
+            (_, Kind::Skipped { .. }) => true,
+            (SpecKind::Asserted(t), Kind::Asserted { tolerance }) => same(*t, *tolerance),
+            (SpecKind::Reported(g), Kind::Reported { goal }) => match (g, goal) {
+                (Goal::Within(a), Goal::Within(b)) => same(*a, *b),
+                (a, b) => a == b,
+            },
+            (SpecKind::Compared(a), Kind::Compared { asserted, .. }) => a == asserted,
+            _ => false,
+        };
+        if !kind_ok {
+            diffs.push(format!("kind {:?} (the spec: {:?})", c.kind, self.kind));
+        }
+        let numeric = matches!(c.kind, Kind::Asserted { .. } | Kind::Reported { .. });
+        if let (Some(r), true) = (self.reference, numeric) {
+            if !same(r, c.reference) {
+                diffs.push(format!("reference {:e} (the spec: {r:e})", c.reference));
+            }
+        }
+        (!diffs.is_empty()).then(|| diffs.join("; "))
+    }
     fn base(&self, seconds: f64) -> Check {
         Check {
             id: self.id.into(),
@@ -287,45 +389,110 @@ pub struct Table {
     pub rows: Vec<(Check, Status)>,
 }
 
+/// Which skipped rows a table accepts.
+#[derive(Debug, Clone, Copy)]
+pub enum Skips<'a> {
+    /// Any (the program's own table lists what it does not compute, with
+    /// the reason: `cdem reproduce`, `cdem perf` through [`Table::assemble`]).
+    Any,
+    /// Only rows whose spec allows it ([`RowSpec::skip`]) or that `also`
+    /// lists (id, reason: the rows a program does not compute); under `ci`
+    /// (`CI=true`) no asserted row, whatever the spec or `also` say.
+    Registry { ci: bool, also: &'a [(&'a str, &'a str)] },
+}
+
+impl Skips<'_> {
+    /// The rule of `cargo test`'s report: the registry's, `CI=true` from the
+    /// environment.
+    pub fn cargo_test() -> Skips<'static> {
+        Skips::Registry { ci: std::env::var("CI").as_deref() == Ok("true"), also: &[] }
+    }
+    /// Why a skip of `spec` is refused (`None`: it is accepted).
+    fn refusal(&self, spec: &RowSpec) -> Option<String> {
+        match *self {
+            Skips::Any => None,
+            Skips::Registry { ci, also } => {
+                if ci && spec.is_asserted() {
+                    Some("an asserted row may not be skipped under CI=true".into())
+                } else if spec.skip.is_none() && !also.iter().any(|(id, _)| *id == spec.id) {
+                    Some("its spec does not allow a skip (RowSpec::skip is None)".into())
+                } else {
+                    None
+                }
+            }
+        }
+    }
+}
+
+/// How [`Table::assemble_with`] judges the recorded rows.
+pub struct Rules<'a> {
+    /// Why a recorded row is not fresh, by id ([`Recorded::stale`]).
+    pub stale: &'a BTreeMap<String, String>,
+    /// The note of a missing row (who should have written it), from its spec.
+    pub absent: &'a dyn Fn(&RowSpec) -> String,
+    pub skips: Skips<'a>,
+}
+
 impl Table {
-    /// Sets the registry's rows `expected` against the `recorded` ones.
-    /// `stale`: ids recorded by a test binary rebuilt since. `absent`: the
-    /// note of a missing row (who should have written it), from its spec.
+    /// Sets the registry's rows `expected` against the `recorded` ones, for
+    /// a program's own table (`cdem reproduce`, `cdem perf`): a spec
+    /// mismatch fails, any skip is accepted ([`Skips::Any`]). `stale`: ids
+    /// recorded by an earlier build. `absent`: the note of a missing row.
     pub fn assemble(
         expected: &[RowSpec],
         recorded: Vec<Check>,
         stale: &[String],
         absent: &dyn Fn(&RowSpec) -> String,
     ) -> Self {
+        let stale: BTreeMap<String, String> =
+            stale.iter().map(|id| (id.clone(), "from an earlier build of its test".to_string())).collect();
+        Self::assemble_with(expected, recorded, &Rules { stale: &stale, absent, skips: Skips::Any })
+    }
+
+    /// Sets the registry's rows `expected` against the `recorded` ones under
+    /// `rules`: each row must be recorded once, fresh, as its spec says, and
+    /// skipped only if the rules allow it.
+    pub fn assemble_with(expected: &[RowSpec], recorded: Vec<Check>, rules: &Rules) -> Self {
         let mut rows = Vec::new();
         let mut left = recorded;
         for spec in expected {
             let found: Vec<Check> = left.iter().filter(|c| c.id == spec.id).cloned().collect();
             left.retain(|c| c.id != spec.id);
-            match found.len() {
-                0 => {
-                    let c = spec.base(0.0).with_note(absent(spec));
-                    rows.push((c, Status::Missing));
-                }
-                n => {
-                    let mut c = found[0].clone();
-                    let status = if n > 1 {
-                        c.note = format!("recorded {n} times");
-                        Status::Fail
-                    } else if stale.contains(&c.id) {
-                        c.note = format!("from an earlier build of {}", spec.test);
-                        Status::Stale
-                    } else {
-                        c.status()
-                    };
-                    rows.push((c, status));
-                }
+            if found.is_empty() {
+                let c = spec.base(0.0).with_note((rules.absent)(spec));
+                rows.push((c, Status::Missing));
+                continue;
             }
+            let mut c = found[0].clone();
+            let fail = |c: &mut Check, status: Status, why: String| {
+                c.note = if c.note.is_empty() { why } else { format!("{why}; {}", c.note) };
+                status
+            };
+            let status = if found.len() > 1 {
+                fail(&mut c, Status::Fail, format!("recorded {} times", found.len()))
+            } else if let Some(why) = rules.stale.get(&c.id) {
+                fail(&mut c, Status::Stale, why.clone())
+            } else if let Some(why) = spec.mismatch(&c) {
+                fail(&mut c, Status::SpecMismatch, why)
+            } else if let (Kind::Skipped { .. }, Some(why)) = (&c.kind, rules.skips.refusal(spec)) {
+                fail(&mut c, Status::SkipRefused, why)
+            } else {
+                c.status()
+            };
+            rows.push((c, status));
         }
         for c in left {
             rows.push((c, Status::Unlisted));
         }
         Self { rows }
+    }
+
+    /// [`Table::assemble_with`] on what [`take_recorded`] found, under the
+    /// skip rule of `cargo test` ([`Skips::cargo_test`]). The row files that
+    /// could not be read ([`Recorded::unreadable`]) are the caller's to fail.
+    pub fn of_recorded(expected: &[RowSpec], recorded: &Recorded, absent: &dyn Fn(&RowSpec) -> String) -> Self {
+        let rules = Rules { stale: &recorded.stale, absent, skips: Skips::cargo_test() };
+        Self::assemble_with(expected, recorded.rows.clone(), &rules)
     }
     /// The failing rows, one line each.
     pub fn failures(&self) -> Vec<String> {
@@ -350,6 +517,8 @@ impl Table {
             Status::Skipped,
             Status::Missing,
             Status::Stale,
+            Status::SpecMismatch,
+            Status::SkipRefused,
             Status::Unlisted,
         ];
         let parts: Vec<String> = all
@@ -413,90 +582,4 @@ impl Table {
         }
         md
     }
-}
-
-/// The rows directory of `cargo test`.
-pub fn rows_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("target/validation/rows")
-}
-
-/// A test's row file: the rows and the test binary that wrote them.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-struct RowFile {
-    /// The writing executable and its modification time (ns since the epoch).
-    writer: String,
-    writer_modified_ns: u128,
-    rows: Vec<Check>,
-}
-
-fn modified_ns(path: &Path) -> Option<u128> {
-    let t = std::fs::metadata(path).ok()?.modified().ok()?;
-    Some(t.duration_since(std::time::UNIX_EPOCH).ok()?.as_nanos())
-}
-
-/// Records a test's rows (overwriting that test's previous rows). A row file
-/// that cannot be written is a failure (this is called by tests), not a
-/// silently shorter table.
-pub fn record(test: &str, checks: &[Check]) {
-    record_into(&rows_dir(), test, checks).unwrap_or_else(|e| panic!("validation rows of {test}: {e}"));
-}
-
-/// [`record`] into `dir`.
-pub fn record_into(dir: &Path, test: &str, checks: &[Check]) -> std::io::Result<()> {
-    std::fs::create_dir_all(dir)?;
-    let exe = std::env::current_exe()?;
-    let file = RowFile {
-        writer: exe.display().to_string(),
-        writer_modified_ns: modified_ns(&exe).unwrap_or(0),
-        rows: checks.to_vec(),
-    };
-    let text = serde_json::to_string_pretty(&file).map_err(std::io::Error::other)?;
-    let tmp = dir.join(format!(".{test}.json.tmp"));
-    std::fs::write(&tmp, text)?;
-    std::fs::rename(&tmp, dir.join(format!("{test}.json")))
-}
-
-/// What [`take_recorded`] found.
-#[derive(Debug, Default)]
-pub struct Recorded {
-    pub rows: Vec<Check>,
-    /// Ids of rows whose writer has been rebuilt since it wrote them.
-    pub stale: Vec<String>,
-    /// Row files that cannot be read, with the reason.
-    pub unreadable: Vec<String>,
-}
-
-/// Reads every row file in `dir` and moves it to `dir/../taken/` (so the
-/// next report sees only rows written again after this one).
-pub fn take_recorded(dir: &Path) -> Recorded {
-    let mut out = Recorded::default();
-    let taken = dir.with_file_name("taken");
-    let _ = std::fs::create_dir_all(&taken);
-    let mut paths: Vec<PathBuf> = std::fs::read_dir(dir)
-        .into_iter()
-        .flatten()
-        .flatten()
-        .map(|e| e.path())
-        .filter(|p| p.extension().is_some_and(|e| e == "json"))
-        .collect();
-    paths.sort();
-    for path in paths {
-        let parsed = std::fs::read_to_string(&path)
-            .map_err(|e| e.to_string())
-            .and_then(|t| serde_json::from_str::<RowFile>(&t).map_err(|e| e.to_string()));
-        match parsed {
-            Ok(file) => {
-                let rebuilt = modified_ns(Path::new(&file.writer)).is_some_and(|m| m != file.writer_modified_ns);
-                if rebuilt {
-                    out.stale.extend(file.rows.iter().map(|c| c.id.clone()));
-                }
-                out.rows.extend(file.rows);
-            }
-            Err(e) => out.unreadable.push(format!("{}: {e}", path.display())),
-        }
-        if let Some(name) = path.file_name() {
-            let _ = std::fs::rename(&path, taken.join(name));
-        }
-    }
-    out
 }

@@ -1,0 +1,150 @@
+//! The input files each row of the validation table is computed from: the
+//! scenes and LEM inputs of its case (the registry's cases), the
+//! files those name (meshes, the scene of an ensemble), the reference data it
+//! is compared with (JSON, snapshots) and its source under references/.
+//! [`super::freshness`] digests them when a row is recorded and again when the
+//! report takes it: a row whose inputs changed since is stale.
+//!
+//! Declared by row-id prefix ([`DECLARED`], the longest prefix wins), so
+//! that a new row under an existing prefix needs no entry; a row no prefix
+//! covers fails `every_row_declares_its_inputs` (tests/report_mutations.rs).
+//! The paths are written out, not taken from the registry's cases: the
+//! registry imports this module's parent (`report`), and the layering test
+//! forbids the cycle; `every_case_input_is_declared` checks they agree.
+
+use std::path::Path;
+
+/// The committed case meshes and their sources, which `meshes/regenerated` compares.
+const CASE_DIRS: &str = "verification/cases";
+
+/// Row-id prefix, and the files (relative to the repository root) its rows
+/// read besides their source. The extreme rows read
+/// `verification/extreme/<name>.toml` ([`declared`]); `meshes/regenerated`
+/// every `.geo` and `.msh` under [`CASE_DIRS`].
+#[rustfmt::skip]
+pub const DECLARED: &[(&str, &[&str])] = &[
+    ("column/springs/", &["verification/cases/column/column.toml"]),
+    ("column/merged/", &["verification/cases/column/column-merged.toml"]),
+    ("study/column/", &["verification/cases/column/column.toml"]),
+    ("extreme/", &[]),
+    ("fem/skfem/", &["references/skfem.json", "verification/cases/column/column-merged.toml", "verification/cases/slope/slope.toml"]),
+    ("slope/", &["verification/cases/slope/slope.toml"]),
+    ("lem/acads/", &["verification/lem/acads-1a.toml", "references/pyslope.json"]),
+    ("lem/paper/", &["verification/lem/paper-slope.toml", "references/pyslope.json"]),
+    ("lem/taylor-60", &[]),
+    ("slip/", &["verification/cases/slope-slip/slope-slip.toml", "verification/lem/paper-slope.toml", "tests/snapshots/slip_surface__ki_segments_cdem_springs.snap"]),
+    ("slope-failure/", &["verification/cases/slope-slip/slope-slip.toml", "verification/cases/slope-slip/slope-slip-stable.toml", "tests/snapshots/progressive_slope__slope_failure_sequence.snap"]),
+    ("wulong/", &["verification/cases/wulong/wulong.toml", "tests/snapshots/wulong__wulong_failure_sequence.snap"]),
+    ("block/", &["tests/fixtures/block-on-plane.toml"]),
+    ("srm/block-friction", &["verification/cases/block-srm/block-srm-friction.toml"]),
+    ("srm/block-cohesion", &["verification/cases/block-srm/block-srm-cohesion.toml"]),
+    ("analysis/column/", &["verification/analysis/column-circle.toml"]),
+    ("analysis/slope/", &["verification/cases/slope/slope.toml"]),
+    ("ensemble/segment/", &["verification/ensemble/cohesive-segment.toml"]),
+    ("meshes/regenerated", &[]),
+    ("perf/", &["verification/cases/slope/slope.toml"]),
+    ("perf/lem/", &["verification/lem/paper-slope-explicit.toml", "verification/lem/acads-1a.toml", "references/pyslope.json"]),
+    ("perf/phase2/", &["verification/cases/slope-slip/slope-slip.toml"]),
+    ("perf/srm/", &["verification/cases/slope-slip/slope-slip.toml"]),
+    ("perf/ensemble/", &["verification/ensemble/paper-slope-slip.toml", "verification/ensemble/paper-slope-slip-srm.toml"]),
+];
+
+/// The declared files of row `id` with reference `source` (its
+/// [`super::RowSpec::source`]; relative paths, sorted, each once): its
+/// prefix's entry, the source's file under references/, and what the TOML
+/// files among them name (recursively). `None`: no prefix covers it.
+pub fn declared(id: &str, source: &str, root: &Path) -> Option<Vec<String>> {
+    let (prefix, files) = DECLARED.iter().filter(|(p, _)| id.starts_with(p)).max_by_key(|(p, _)| p.len())?;
+    let mut out: Vec<String> = files.iter().map(|f| f.to_string()).collect();
+    if *prefix == "extreme/" {
+        let name = id.trim_start_matches(prefix);
+        out.push(format!("verification/extreme/{name}.toml"));
+    }
+    if *prefix == "meshes/regenerated" {
+        out.extend(case_meshes(root));
+    }
+    // The source's file: "references/x.md", or "cdem fem (references/skfem.md)".
+    out.extend(
+        source
+            .split(|c: char| c.is_whitespace() || c == '(' || c == ')')
+            .filter(|w| w.starts_with("references/"))
+            .map(str::to_string),
+    );
+    let mut k = 0;
+    while k < out.len() {
+        if out[k].ends_with(".toml") {
+            for named in named_files(root, &out[k]) {
+                if !out.contains(&named) {
+                    out.push(named);
+                }
+            }
+        }
+        k += 1;
+    }
+    out.sort();
+    out.dedup();
+    Some(out)
+}
+
+/// Every `.geo` and `.msh` in the directories under [`CASE_DIRS`].
+fn case_meshes(root: &Path) -> Vec<String> {
+    let mut out = Vec::new();
+    for dir in std::fs::read_dir(root.join(CASE_DIRS)).into_iter().flatten().flatten() {
+        for f in std::fs::read_dir(dir.path()).into_iter().flatten().flatten() {
+            let path = f.path();
+            if path.extension().is_some_and(|e| e == "geo" || e == "msh") {
+                if let (Some(d), Some(n)) = (dir.file_name().to_str(), path.file_name().and_then(|n| n.to_str())) {
+                    out.push(format!("{CASE_DIRS}/{d}/{n}"));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The files a TOML input names: its string values ending in `.msh` and
+/// those ending in `.toml`, `.json` or `.csv` that are files, relative to
+/// its directory (a scene's mesh, an LEM input's `from_mesh`, an ensemble's
+/// scene). An
+/// unreadable TOML names nothing here: it is digested as it is (or as
+/// missing) by [`super::freshness`].
+fn named_files(root: &Path, toml_file: &str) -> Vec<String> {
+    let Ok(text) = std::fs::read_to_string(root.join(toml_file)) else { return Vec::new() };
+    let Ok(value) = text.parse::<toml::Table>() else { return Vec::new() };
+    let dir = Path::new(toml_file).parent().unwrap_or(Path::new(""));
+    let mut strings = Vec::new();
+    collect_strings(&toml::Value::Table(value), &mut strings);
+    strings
+        .into_iter()
+        .filter(|s| [".msh", ".toml", ".json", ".csv"].iter().any(|e| s.ends_with(e)))
+        .filter_map(|s| normalise(&dir.join(&s)))
+        // A mesh is an input even when it is missing (then the row is stale:
+        // fail closed); other names count if they are files (not outputs).
+        .filter(|p| p.ends_with(".msh") || root.join(p).is_file())
+        .collect()
+}
+
+fn collect_strings(v: &toml::Value, out: &mut Vec<String>) {
+    match v {
+        toml::Value::String(s) => out.push(s.clone()),
+        toml::Value::Array(a) => a.iter().for_each(|x| collect_strings(x, out)),
+        toml::Value::Table(t) => t.values().for_each(|x| collect_strings(x, out)),
+        _ => {}
+    }
+}
+
+/// `a/b/../c` as `a/c`, with `/` separators; `None` if it leaves the root.
+fn normalise(p: &Path) -> Option<String> {
+    let mut parts: Vec<String> = Vec::new();
+    for c in p.components() {
+        match c {
+            std::path::Component::Normal(s) => parts.push(s.to_str()?.to_string()),
+            std::path::Component::ParentDir => {
+                parts.pop()?;
+            }
+            std::path::Component::CurDir => {}
+            _ => return None,
+        }
+    }
+    Some(parts.join("/"))
+}
