@@ -355,35 +355,133 @@ fn an_inadmissible_given_circle_is_an_error_not_a_panic() {
     assert!(err.contains("circle"), "{err}");
 }
 
+/// A purely cohesive slope of height H at `beta` deg, slip circles not below
+/// the toe's level (a base at toe level, no foundation layer): its TOML text
+/// (a vertical face is 1 mm wide: the ground's x must increase strictly).
+fn taylor_text(beta: f64, slices: usize) -> String {
+    let (h, c, gamma) = (10.0, 20e3, 20e3);
+    let dx = (h / beta.to_radians().tan()).max(1e-3);
+    format!(
+        "[section]\nground = [[0.0, 0.0], [20.0, 0.0], [{}, {h}], [60.0, {h}]]\nz_min = 0.0\n\
+         [[material]]\ncohesion = {c}\nfriction_angle = 0.0\nunit_weight = {gamma}\n[analysis]\nslices = {slices}\n",
+        20.0 + dx
+    )
+}
+
+/// Our Bishop minimum on [`taylor_text`] against Taylor's chart
+/// `F = c / (N gamma H)`, recorded as row `id`; returns the result and F.
+fn taylor_case(beta: f64, n: reg::Reference, id: &str, file: &str) -> (LemResult, f64) {
+    let (h, c, gamma) = (10.0, 20e3, 20e3);
+    let r = analyse(&parse(&taylor_text(beta, 100)).unwrap()).unwrap();
+    let b = critical(&r, Method::Bishop);
+    let expected = c / (n.value * gamma * h);
+    println!(
+        "Taylor {beta} deg: Bishop {:.4}, chart {expected:.4} ({:+.2} %), circle ({:.3}, {:.3}, {:.3}), exit ({:.3}, {:.3}), entry ({:.3}, {:.3})",
+        b.fs,
+        100.0 * (b.fs / expected - 1.0),
+        b.circle.xc,
+        b.circle.zc,
+        b.circle.r,
+        b.exit[0],
+        b.exit[1],
+        b.entry[0],
+        b.entry[1]
+    );
+    cdem::harness::report::record(file, &[reg::row(id).value(b.fs, expected, r.wall_s)]);
+    assert!(
+        (b.fs - expected).abs() <= reg::TOL_TAYLOR * expected,
+        "{beta} deg: Bishop {} against Taylor {expected}",
+        b.fs
+    );
+    // The search's admissibility tolerance: 1e-9 (1 + r + |zc|); only the
+    // arc from the exit to the entry is the slip surface.
+    let Circle { xc, zc, r: radius } = b.circle;
+    let lowest = if (b.exit[0]..=b.entry[0]).contains(&xc) {
+        zc - radius
+    } else {
+        zc - (radius * radius - (b.exit[0] - xc).powi(2)).sqrt()
+    };
+    assert!(
+        lowest >= -1e-9 * (1.0 + radius + zc.abs()),
+        "{beta} deg: the slip surface passes {} m below the base",
+        -lowest
+    );
+    (r, expected)
+}
+
 /// A base at the toe's level (no foundation layer, the textbook case): a
 /// purely cohesive 60 deg slope of height H whose critical circle is a toe
 /// circle, so Taylor's chart applies: F = c / (N gamma H), N = 0.191.
 #[test]
 fn a_base_at_toe_level_is_allowed_and_matches_taylors_chart() {
-    let (h, c, gamma) = (10.0, 20e3, 20e3);
-    let dx = h / 60f64.to_radians().tan();
-    let text = format!(
-        "[section]\nground = [[0.0, 0.0], [20.0, 0.0], [{}, {h}], [60.0, {h}]]\nz_min = 0.0\n\
-         [[material]]\ncohesion = {c}\nfriction_angle = 0.0\nunit_weight = {gamma}\n[analysis]\nslices = 100\n",
-        20.0 + dx
-    );
-    let r = analyse(&parse(&text).unwrap()).unwrap();
+    let (r, _) = taylor_case(60.0, reg::TAYLOR_N_60, "lem/taylor-60", "lem_taylor_toe_level");
     let b = critical(&r, Method::Bishop);
-    let expected = c / (reg::TAYLOR_N_60.value * gamma * h);
-    println!(
-        "Taylor 60 deg: Bishop {:.4}, chart {expected:.4}, circle ({:.3}, {:.3}, {:.3})",
-        b.fs, b.circle.xc, b.circle.zc, b.circle.r
-    );
-    cdem::harness::report::record("lem_taylor_toe_level", &[reg::row("lem/taylor-60").value(b.fs, expected, r.wall_s)]);
-    assert!((b.fs - expected).abs() <= reg::TOL_TAYLOR * expected, "Bishop {} against Taylor {expected}", b.fs);
-    // The search's admissibility tolerance: 1e-9 (1 + r + |zc|).
-    let Circle { zc, r: radius, .. } = b.circle;
-    assert!(zc - radius >= -1e-9 * (1.0 + radius + zc.abs()), "the circle passes {} m below the base", radius - zc);
+    // The 60 deg toe circle's lowest point is the toe: it needs no arc beyond
+    // the toe (its continuation stays above the toe-level ground).
+    assert!(b.circle.zc - b.circle.r >= -1e-9 * (1.0 + b.circle.r + b.circle.zc.abs()));
     // The level z_min may equal the lowest ground point, not lie above it.
-    let above = text.replace("z_min = 0.0", "z_min = 0.5");
+    let above = taylor_text(60.0, 100).replace("z_min = 0.0", "z_min = 0.5");
     assert!(
         matches!(parse(&above), Err(cdem::Error::Scene(cdem::error::SceneError::Invalid { ref key, .. })) if key == "section.z_min")
     );
+}
+
+/// Steep cohesive slopes (75 and 90 deg): Taylor's toe circles have their
+/// centre in front of the toe, so the circle continued beyond the toe
+/// re-enters the level ground; the slip surface is only the arc from the
+/// toe (or the face just above it) to the crest (references/lem.md).
+#[test]
+fn steep_cohesive_slopes_match_taylors_chart_with_toe_circles_whose_continuation_re_enters_the_ground() {
+    for (beta, n, id, file) in [
+        (75.0, reg::TAYLOR_N_75, "lem/taylor-75", "lem_taylor_75"),
+        (90.0, reg::TAYLOR_N_90, "lem/taylor-90", "lem_taylor_90"),
+    ] {
+        let (r, _) = taylor_case(beta, n, id, file);
+        let b = critical(&r, Method::Bishop);
+        // The critical circle is a toe circle whose centre lies in front of
+        // the toe (x < 20): the one the two-crossing rule rejected.
+        assert!(b.circle.xc < 20.0 && b.exit[0] >= 20.0 - 1e-6, "{beta} deg: {b:?}");
+        assert!(b.circle.zc - b.circle.r < 0.0, "{beta} deg: the full circle dips below the toe-level ground");
+    }
+}
+
+/// A circle that cuts the ground four times (the level ground in front of
+/// the toe twice, the face and the crest) slides on the crest-side run only:
+/// its slices span the face crossing to the crest crossing, and its FS is
+/// the one the same arc gives on a section whose level ground is lowered
+/// out of the circle's way (the run in front of the toe is not part of it).
+#[test]
+fn a_circle_re_entering_the_ground_in_front_of_the_toe_slides_on_its_crest_side_arc() {
+    let material = Some(Material { cohesion: 20e3, friction_angle: 0.0, unit_weight: 20e3 });
+    let section = |front: Vec<[f64; 2]>| {
+        let ground = [front, vec![[20.0, 0.0], [20.001, 10.0], [60.0, 10.0]]].concat();
+        LemSection::new(ground, LowerBound::Level(-30.0), material, vec![], Some(cdem::lem::Facing::Left)).unwrap()
+    };
+    // Centre in front of the face, radius reaching below z = 0 there.
+    let circle = Circle { xc: 15.0, zc: 14.0, r: 14.5 };
+    let (four, lowered) = (section(vec![[0.0, 0.0]]), section(vec![[0.0, -5.0], [19.9, -5.0]]));
+    let s = slices_of(&four, circle, 50).unwrap();
+    let (x0, x1) = (s[0].x[0], s[s.len() - 1].x[1]);
+    assert!(x0 > 20.0 && x0 < 20.001, "exit on the face: {x0}");
+    assert!((x1 - (15.0 + (14.5f64.powi(2) - 16.0).sqrt())).abs() < 1e-9, "entry on the crest: {x1}");
+    let (a, b) = (evaluate_circle(&four, circle, 50).unwrap(), evaluate_circle(&lowered, circle, 50).unwrap());
+    // Lowered to z = -5 in front of the toe, the ground is out of the arc's
+    // way (its lowest point is at z = -0.5): two crossings, the same mass.
+    let (fa, fb) = (a.bishop.unwrap(), b.bishop.unwrap());
+    assert!((fa - fb).abs() <= 1e-12 * fb, "four crossings {fa}, two {fb}");
+    assert!((a.exit[0] - b.exit[0]).abs() <= 1e-12 && (a.entry[0] - b.entry[0]).abs() <= 1e-12);
+    // The section may end where the arc's continuation is under the ground
+    // (x = 12, between its re-entry points 11.2 and 18.8): the crest-side run
+    // is closed, so the same mass.
+    let short = section(vec![[12.0, 0.0]]);
+    let fc = evaluate_circle(&short, circle, 50).unwrap().bishop.unwrap();
+    assert!((fc - fb).abs() <= 1e-12 * fb, "section from x = 12: {fc}, two crossings {fb}");
+    // A deeper circle passes under the toe: its one run reaches x = 12 under
+    // the ground, an open mass (rejected), but a whole one on the longer section.
+    let deeper = Circle { r: 15.0, ..circle };
+    assert_eq!(evaluate_circle(&short, deeper, 50).unwrap_err(), cdem::lem::Reject::OpenArc);
+    let s = slices_of(&four, deeper, 50).unwrap();
+    assert!((s[0].x[0] - (15.0 - 29f64.sqrt())).abs() < 1e-9, "exit in front of the toe: {}", s[0].x[0]);
 }
 
 /// pySlope 1.4.0's Bishop simplified on our critical circles (its FS

@@ -336,6 +336,18 @@ pub const TAYLOR_N_60: Reference = Reference {
     source: LEM_MD,
     what: "Taylor (1937) stability number, phi = 0, beta = 60 deg (toe circle)",
 };
+/// Taylor's stability number of a purely cohesive slope of 75 deg (toe circle).
+pub const TAYLOR_N_75: Reference = Reference {
+    value: 0.219,
+    source: LEM_MD,
+    what: "Taylor (1937) stability number, phi = 0, beta = 75 deg (toe circle)",
+};
+/// Taylor's stability number of a purely cohesive vertical slope (toe circle).
+pub const TAYLOR_N_90: Reference = Reference {
+    value: 0.261,
+    source: LEM_MD,
+    what: "Taylor (1937) stability number, phi = 0, beta = 90 deg (toe circle)",
+};
 
 // ---------------------------------------------------------------------------
 // Tolerances a test and `cdem reproduce` both apply.
@@ -801,6 +813,8 @@ pub const ROWS: &[RowSpec] = &[
     spec("lem/paper/bishop", "paper slope LEM", "Bishop FS vs the paper's LEM (0.01 absolute)", Asserted(TOL_PAPER_LEM_FS_ABSOLUTE / 1.084), PAPER_MD, "tests/lem.rs").with_reference(PAPER_LEM_FS.value),
     spec("lem/paper/pyslope", "paper slope LEM", "Bishop FS on our circle vs pySlope 1.4.0", Asserted(TOL_PYSLOPE_SAME_CIRCLE), PYSLOPE_JSON, "tests/lem.rs"),
     spec("lem/taylor-60", "Taylor 60 deg, base at toe level", "Bishop FS", Asserted(TOL_TAYLOR), LEM_MD, "tests/lem.rs"),
+    spec("lem/taylor-75", "Taylor 75 deg, base at toe level", "Bishop FS", Asserted(TOL_TAYLOR), LEM_MD, "tests/lem.rs"),
+    spec("lem/taylor-90", "Taylor 90 deg, base at toe level", "Bishop FS", Asserted(TOL_TAYLOR), LEM_MD, "tests/lem.rs"),
     // Eq. 21-22 on the slip circle (tests/slip_surface.rs).
     spec("slip/eq21-springs-vs-lem", SLIP_CASE, "eq. 21 K from CDEM springs vs LEM Bishop", Asserted(TOL_EQ21_VS_LEM), LEM_MD, "tests/slip_surface.rs"),
     spec("slip/eq21-cdem-vs-fem", SLIP_CASE, "eq. 21 K from CDEM stresses vs FEM stresses", Asserted(TOL_EQ21_CDEM_VS_FEM), LEM_MD, "tests/slip_surface.rs"),

@@ -20,9 +20,9 @@ pub enum Reject {
     Degenerate,
     #[error("the lower arc does not reach the ground")]
     Misses,
-    #[error("the arc ends under the ground (centre too low, or it leaves the section through a side)")]
+    #[error("the sliding mass is open: the arc ends under the ground on the crest side, or the mass reaches the section's toe-side end (centre too low, or the section too short)")]
     OpenArc,
-    #[error("the lower arc cuts the ground in {0} points, not 2")]
+    #[error("the lower arc cuts the ground in {0} points and bounds no sliding mass there (or more than 16)")]
     Crossings(usize),
     #[error("the arc passes below the lower bound")]
     BelowLowerBound,
@@ -103,7 +103,10 @@ fn z_arc(c: Circle, x: f64) -> f64 {
     c.zc - (c.r * c.r - u * u).max(0.0).sqrt()
 }
 
-/// The exit and entry x of the lower arc on the ground (internal frame).
+/// The exit and entry x of the lower arc on the ground (internal frame): the
+/// two crossings when there are two and the arc's ends are above the ground
+/// (the common case, its own branch), else the crest-side run of the arc
+/// under the ground ([`crest_side_mass`]).
 pub(crate) fn cut(f: &Frame, c: Circle) -> Result<(f64, f64), Reject> {
     if !(c.r > 0.0 && c.r.is_finite() && c.xc.is_finite() && c.zc.is_finite()) {
         return Err(Reject::Degenerate);
@@ -114,10 +117,14 @@ pub(crate) fn cut(f: &Frame, c: Circle) -> Result<(f64, f64), Reject> {
     if lo >= hi {
         return Err(Reject::Misses);
     }
-    if polyline_z(g, lo) >= z_arc(c, lo) || polyline_z(g, hi) >= z_arc(c, hi) {
+    // The arc's crest-side end must be above the ground; its toe-side end
+    // may leave the section under the ground if a closed run of the arc
+    // under the ground lies on the crest side of it ([`crest_side_mass`]).
+    if polyline_z(g, hi) >= z_arc(c, hi) {
         return Err(Reject::OpenArc);
     }
-    let mut xs = [0.0f64; 2];
+    let left_open = polyline_z(g, lo) >= z_arc(c, lo);
+    let mut xs = [0.0f64; MAX_CROSSINGS];
     let mut count = 0usize;
     let last = g.len() - 2;
     for k in 0..=last {
@@ -138,7 +145,7 @@ pub(crate) fn cut(f: &Frame, c: Circle) -> Result<(f64, f64), Reject> {
         for t in [(-qb - s) / (2.0 * qa), (-qb + s) / (2.0 * qa)] {
             let in_segment = t >= 0.0 && (t < 1.0 || (k == last && t <= 1.0));
             if in_segment && a[1] + t * d[1] < c.zc {
-                if count < 2 {
+                if count < MAX_CROSSINGS {
                     xs[count] = a[0] + t * d[0];
                 }
                 count += 1;
@@ -146,9 +153,50 @@ pub(crate) fn cut(f: &Frame, c: Circle) -> Result<(f64, f64), Reject> {
         }
     }
     match count {
+        0 if left_open => Err(Reject::OpenArc),
         0 => Err(Reject::Misses),
-        2 => Ok((xs[0].min(xs[1]), xs[0].max(xs[1]))),
-        n => Err(Reject::Crossings(n)),
+        2 if !left_open => Ok((xs[0].min(xs[1]), xs[0].max(xs[1]))),
+        n if n > MAX_CROSSINGS => Err(if left_open { Reject::OpenArc } else { Reject::Crossings(n) }),
+        n => crest_side_mass(g, c, &mut xs[..n], left_open),
+    }
+}
+
+/// Crossings [`cut`] keeps; a circle cutting the ground more often is rejected.
+const MAX_CROSSINGS: usize = 16;
+
+/// The sliding mass of a lower arc that cuts the ground more than twice (or
+/// touches it, or leaves the section under the ground on the toe side,
+/// `left_open`): the crest-side run of the arc under the ground, as (exit,
+/// entry). Between consecutive crossings the arc is either under the ground
+/// (mass) or above it (air); a run is a maximal chain of mass intervals, so a
+/// point where the arc only touches the ground (a toe vertex) does not split
+/// it, and intervals narrower than rounding neither split nor start one. The
+/// runs further toward the toe are the arc's continuation under the ground
+/// (Taylor's toe circles of steep slopes: the arc re-enters the level ground
+/// in front of the toe) and are not part of this sliding mass. Errors: the
+/// crest-side run reaches the section's toe-side end under the ground
+/// (`OpenArc`), or the arc is nowhere under the ground (`Crossings`).
+fn crest_side_mass(g: &[[f64; 2]], c: Circle, xs: &mut [f64], left_open: bool) -> Result<(f64, f64), Reject> {
+    xs.sort_unstable_by(f64::total_cmp);
+    let tol = 1e-9 * (1.0 + c.r);
+    let mut entry: Option<f64> = None;
+    for i in (0..xs.len() - 1).rev() {
+        let (a, b) = (xs[i], xs[i + 1]);
+        if b - a <= tol {
+            continue;
+        }
+        let m = 0.5 * (a + b);
+        let under = polyline_z(g, m) > z_arc(c, m);
+        match (under, entry) {
+            (true, None) => entry = Some(b),
+            (false, Some(e)) => return Ok((b, e)),
+            _ => {}
+        }
+    }
+    match entry {
+        _ if left_open => Err(Reject::OpenArc),
+        Some(e) => Ok((xs[0], e)),
+        None => Err(Reject::Crossings(xs.len())),
     }
 }
 

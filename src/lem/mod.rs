@@ -2,9 +2,13 @@
 //!
 //! A dry 2D section (x horizontal, z up, SI units: m, Pa, N/m^3, forces per
 //! metre run) is cut by a trial circle `(xc, zc, r)`. Only the lower arc
-//! `z = zc - sqrt(r^2 - (x - xc)^2)` is a slip surface. It must cut the ground
-//! polyline in exactly two points: the *exit* on the toe side and the *entry*
-//! on the crest side. The sliding mass between them is divided into `n`
+//! `z = zc - sqrt(r^2 - (x - xc)^2)` is a slip surface: the part of it under
+//! the ground between two crossings of the ground polyline, the *exit* on the
+//! toe side and the *entry* on the crest side. Where the arc cuts the ground
+//! more than twice (a toe circle of a steep slope whose continuation
+//! re-enters the level ground in front of the toe), the sliding mass is the
+//! crest-side run of the arc under the ground, and the rest of the arc is not
+//! part of it. The sliding mass is divided into `n`
 //! vertical slices of equal width `b` (default [`DEFAULT_SLICES`] = 50).
 //!
 //! Per slice `i` (math names): weight `W` (exact area between the ground and
@@ -42,7 +46,7 @@
 //! minimised on its own: `fs.<method>` is that method's own minimum and
 //! `critical.<method>` its circle; `on_bishop_critical` gives all three
 //! methods on the Bishop critical circle. See `search.rs` for the admissibility
-//! rules (two crossings, lower bound, minimum depth and width, direction).
+//! rules (a closed sliding mass, lower bound, minimum depth and width, direction).
 //!
 //! Sections facing either way are supported: a section facing +x is mirrored
 //! internally (x -> -x) and results are mirrored back.

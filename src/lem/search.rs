@@ -11,11 +11,14 @@
 //!    `0.05 H`, then one restart with `0.01 H`), inadmissible circles scoring
 //!    +inf.
 //!
-//! A circle is admissible if its lower arc cuts the ground in exactly two
-//! points and ends above the ground on both sides, stays above the lower
-//! bound, drives the mass toward -x (`sum W sin(alpha) > 0`), and is not a
-//! sliver: the deepest slice's mean height is at least `min_depth` (default
-//! `0.02 H`) and the entry-exit width at least `min_width` (default `0.1 H`).
+//! A circle is admissible if its lower arc bounds a closed sliding mass with
+//! the ground (the arc ends above the ground on the crest side; two crossings,
+//! or with more, the crest-side run of the arc under the ground, which must
+//! not reach the section's toe-side end), whose arc from exit to entry stays
+//! above the lower bound, drives the mass toward -x (`sum W sin(alpha) > 0`),
+//! and is not a sliver: the deepest slice's mean height is at least
+//! `min_depth` (default `0.02 H`) and the entry-exit width at least
+//! `min_width` (default `0.1 H`).
 //!
 //! Determinism: every circle has a fixed key (its place in the grid or the
 //! entry-exit list); the best circle is the least `(FS, key)`, so the result
@@ -140,7 +143,7 @@ const REASONS: [&str; 8] = [
     "degenerate",
     "misses the ground",
     "open arc",
-    "not two crossings",
+    "no sliding mass among the crossings",
     "below the lower bound",
     "sliver",
     "wrong direction",
