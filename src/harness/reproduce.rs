@@ -116,6 +116,8 @@ const NOT_IN_REPRODUCE: &[(&str, &str)] = &[
     ("fem/skfem/slope-perturbed/min-szz", SKFEM_ONLY),
     ("fem/skfem/slope-perturbed/all", SKFEM_ONLY),
     ("lem/taylor-60", "a section built in the test: cargo test --release --test lem"),
+    ("lem/taylor-75", "a section built in the test: cargo test --release --test lem"),
+    ("lem/taylor-90", "a section built in the test: cargo test --release --test lem"),
     ("srm/block-friction", "strength reduction of the block cases: cargo test --release --test srm"),
     ("srm/block-cohesion", "strength reduction of the block cases: cargo test --release --test srm"),
     ("ensemble/segment/mean", "the analytic ensemble: cargo test --release --test ensemble"),
