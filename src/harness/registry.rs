@@ -551,8 +551,8 @@ impl ExtremeCase {
         self.row_spec_for(crate::solver::ElasticSolver::Pcg)
     }
     /// Its row spec under `solver` (the same tolerance under both; a run
-    /// whose own convergence measure misses fails the row,
-    /// [`crate::harness::suite::extreme::Convergence`]).
+    /// whose own convergence measure misses fails the row, see
+    /// `harness::suite::extreme`).
     pub fn row_spec_for(&self, solver: crate::solver::ElasticSolver) -> RowSpec {
         let (id, case, quantity) = match solver {
             crate::solver::ElasticSolver::Pcg => {
@@ -572,6 +572,10 @@ impl ExtremeCase {
         }
     }
 }
+
+/// The elastic solvers every extreme case runs under, in the order of its rows.
+pub const EXTREME_SOLVERS: [crate::solver::ElasticSolver; 2] =
+    [crate::solver::ElasticSolver::Pcg, crate::solver::ElasticSolver::Dr];
 
 /// The stiff and extreme suite, in the order of references/extreme.md.
 pub fn extreme_cases() -> [ExtremeCase; 8] {
@@ -810,7 +814,7 @@ pub const ROWS: &[RowSpec] = &[
 /// extreme suite's rows after the column's.
 pub fn rows() -> Vec<RowSpec> {
     let mut all: Vec<RowSpec> = ROWS[..6].to_vec();
-    all.extend(extreme_cases().iter().flat_map(|c| crate::harness::suite::extreme::SOLVERS.map(|s| c.row_spec_for(s))));
+    all.extend(extreme_cases().iter().flat_map(|c| EXTREME_SOLVERS.map(|s| c.row_spec_for(s))));
     all.extend_from_slice(&ROWS[6..]);
     all
 }

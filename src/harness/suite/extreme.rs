@@ -14,7 +14,7 @@ use crate::solver::{f_ext_max, unbalanced_ratio, ElasticSolver};
 pub const KE_DECAY: f64 = 1e-10;
 
 /// The two elastic solvers, in the order of the rows.
-pub const SOLVERS: [ElasticSolver; 2] = [ElasticSolver::Pcg, ElasticSolver::Dr];
+pub const SOLVERS: [ElasticSolver; 2] = reg::EXTREME_SOLVERS;
 
 /// What a run's own solver produces, against its bound:
 /// - dynamic relaxation: the kinetic energy decays (last recorded value over
