@@ -5,54 +5,28 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use cdem::analysis::stats::normal_cdf;
-use cdem::drivers::ensemble::{aggregate, mean_critical_circle, run_members, EnsembleInput};
+use cdem::drivers::ensemble::{mean_critical_circle, run_members, EnsembleInput};
 use cdem::error::SceneError;
 use cdem::harness::registry as reg;
-
-/// kappa of FS = kappa c for the circular segment of
-/// `verification/ensemble/cohesive-segment.toml` (ground z = s x, circle
-/// centre (0, zc), radius r, unit weight gamma): half-angle t = acos(d / r),
-/// d = zc / sqrt(1 + s^2); area r^2 (t - sin t cos t); arc 2 r t; centroid
-/// 2 r sin^3 t / (3 (t - sin t cos t)) from the centre, its lever arm that
-/// times s / sqrt(1 + s^2). FS = c (2 r t) r / (gamma A x_g).
-fn segment_kappa() -> f64 {
-    let (s, zc, r, gamma) = (0.5f64, 12.0f64, 20.0f64, 18e3);
-    let k = (1.0 + s * s).sqrt();
-    let t = (zc / k / r).acos();
-    let area = r * r * (t - t.sin() * t.cos());
-    let g = 2.0 * r * t.sin().powi(3) / (3.0 * (t - t.sin() * t.cos()));
-    2.0 * r * t * r / (gamma * area * g * s / k)
-}
+use cdem::harness::suite::ensemble::{segment, COHESION};
 
 /// With c normal, FS = kappa c is normal with known mean and deviation, so
 /// PF = Phi((1 - mean) / deviation) exactly: the ensemble's mean and PF must
 /// contain them in their 95 % intervals, its deviation within 5 % (the
 /// deviation of a sample deviation is sigma / sqrt(2 n): 1.1 % at n = 4000).
+/// The run and its rows are [`cdem::harness::suite::ensemble::segment`]
+/// (shared with `cdem reproduce`).
 #[test]
 fn mean_and_probability_of_failure_match_the_analytic_normal_case() {
-    let path = Path::new("verification/ensemble/cohesive-segment.toml");
-    let input = EnsembleInput::load(path).unwrap();
-    let (mu_c, sd_c) = (38523.203379970284, 4815.4004224962855);
-    let (mean, sd) = (segment_kappa() * mu_c, segment_kappa() * sd_c);
+    let seg = segment(Path::new(env!("CARGO_MANIFEST_DIR"))).unwrap();
+    cdem::harness::report::record("ensemble_segment", &seg.rows);
+    let (mean, sd, pf, n) = (seg.mean, seg.sd, seg.pf, seg.members);
     assert!((mean - 1.2).abs() < 1e-9 && (sd - 0.15).abs() < 1e-9, "the file's values: mean {mean}, sd {sd}");
-    let pf = normal_cdf((1.0 - mean) / sd);
-
-    let n = input.default_members();
-    let circle = mean_critical_circle(&input).unwrap();
-    let records = run_members(&input, input.default_seed(), 0..n, circle, &mut |_| {}).unwrap();
-    let s = aggregate("cohesive-segment", 7, &input.analyses, None, circle, &records);
-    let (fs, r) = (s.fs.unwrap(), s.reliability.unwrap());
+    let s = &seg.summary;
+    let (fs, r) = (s.fs.as_ref().unwrap(), s.reliability.as_ref().unwrap());
     println!(
         "n {n}: mean {:.5} CI {:?} (exact {mean}); sd {:.5} (exact {sd}); PF {:.5} CI {:?} (exact {pf:.5})",
         fs.mean, fs.mean_ci95, fs.std_dev, r.probability_of_failure, r.pf_ci95
-    );
-    cdem::harness::report::record(
-        "ensemble_segment",
-        &[
-            reg::row("ensemble/segment/mean").value(fs.mean, mean, 0.0),
-            reg::row("ensemble/segment/pf").value(r.probability_of_failure, pf, 0.0),
-        ],
     );
     assert_eq!(s.members_without_fs, 0);
     // The LEM's own error on this circle at 200 slices is ~2e-4 (second order,
@@ -61,8 +35,10 @@ fn mean_and_probability_of_failure_match_the_analytic_normal_case() {
     assert!(r.pf_ci95[0] <= pf && pf <= r.pf_ci95[1], "PF {:?} vs {pf}", r.pf_ci95);
     assert!((fs.std_dev / sd - 1.0).abs() < 0.05, "sd {} vs {sd}", fs.std_dev);
     // The drawn cohesions themselves: the sampler's mean and deviation.
+    let (mu_c, sd_c) = COHESION;
     let (_, c) = &s.draws[0];
     assert!((c.mean - mu_c).abs() < 3.0 * sd_c / (n as f64).sqrt(), "{c:?}");
+    assert!(seg.rows.iter().all(|r| r.passed()), "{:?}", seg.rows);
 }
 
 fn cdem() -> Command {

@@ -355,26 +355,14 @@ fn an_inadmissible_given_circle_is_an_error_not_a_panic() {
     assert!(err.contains("circle"), "{err}");
 }
 
-/// A purely cohesive slope of height H at `beta` deg, slip circles not below
-/// the toe's level (a base at toe level, no foundation layer): its TOML text
-/// (a vertical face is 1 mm wide: the ground's x must increase strictly).
-fn taylor_text(beta: f64, slices: usize) -> String {
-    let (h, c, gamma) = (10.0, 20e3, 20e3);
-    let dx = (h / beta.to_radians().tan()).max(1e-3);
-    format!(
-        "[section]\nground = [[0.0, 0.0], [20.0, 0.0], [{}, {h}], [60.0, {h}]]\nz_min = 0.0\n\
-         [[material]]\ncohesion = {c}\nfriction_angle = 0.0\nunit_weight = {gamma}\n[analysis]\nslices = {slices}\n",
-        20.0 + dx
-    )
-}
+use cdem::harness::suite::taylor::taylor_text;
 
 /// Our Bishop minimum on [`taylor_text`] against Taylor's chart
-/// `F = c / (N gamma H)`, recorded as row `id`; returns the result and F.
+/// `F = c / (N gamma H)` (`cdem::harness::suite::taylor`, shared with
+/// `cdem reproduce`), recorded as row `id`; returns the result and F.
 fn taylor_case(beta: f64, n: reg::Reference, id: &str, file: &str) -> (LemResult, f64) {
-    let (h, c, gamma) = (10.0, 20e3, 20e3);
-    let r = analyse(&parse(&taylor_text(beta, 100)).unwrap()).unwrap();
-    let b = critical(&r, Method::Bishop);
-    let expected = c / (n.value * gamma * h);
+    let run = cdem::harness::suite::taylor::run(beta, n, id).unwrap();
+    let (r, b, expected) = (run.result, run.bishop, run.expected);
     println!(
         "Taylor {beta} deg: Bishop {:.4}, chart {expected:.4} ({:+.2} %), circle ({:.3}, {:.3}, {:.3}), exit ({:.3}, {:.3}), entry ({:.3}, {:.3})",
         b.fs,
@@ -387,7 +375,7 @@ fn taylor_case(beta: f64, n: reg::Reference, id: &str, file: &str) -> (LemResult
         b.entry[0],
         b.entry[1]
     );
-    cdem::harness::report::record(file, &[reg::row(id).value(b.fs, expected, r.wall_s)]);
+    cdem::harness::report::record(file, &[run.row]);
     assert!(
         (b.fs - expected).abs() <= reg::TOL_TAYLOR * expected,
         "{beta} deg: Bishop {} against Taylor {expected}",

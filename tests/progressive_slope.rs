@@ -2,76 +2,46 @@
 //! the LEM critical circle (interface "slip" of verification/cases/slope-slip/),
 //! c = 16 kPa, phi = 18 deg, T = 16 kPa, brittle loss of cohesion.
 //!
-//! Physics asserted: the first springs to fail lie where the elastic K_i
-//! (eq. 22) is below 1; with the cohesion gone the friction-only eq. 21 of
-//! the elastic state is below 1, so the mass must slide, and it does
-//! (global sliding), although the LEM gives FS 1.089; and the paper's order
-//! holds: the K_i < 1 zones a and c (the paper's ab and cd) are fully failed
-//! before the K_i >= 1 zones b and d (bc and de), then the mass slides
-//! (row `slope-failure/order-vs-paper`). The sequence (zones of
-//! the surface in the order they first fail and are fully failed) is an insta
-//! snapshot. Zones: the surface cut where the elastic K_i crosses 1, lettered
-//! from the toe. Writes target/figures/fig10-*.png.
+//! Physics asserted: the first springs to fail are exactly those that violate
+//! eq. 17-18 at the elastic state, where the elastic K_i (eq. 22) is lowest;
+//! with the cohesion gone the friction-only eq. 21 of the elastic state is
+//! below 1, so the mass must slide, and it does (global sliding), although
+//! the LEM gives FS 1.089. The zones (the surface cut where the elastic K_i
+//! crosses 1, lettered from the toe) and their first- and full-failure order
+//! are [`cdem::harness::suite::slope_failure`] (shared with `cdem
+//! reproduce`): the sequence is an insta snapshot, both orders of all five
+//! zones are reported rows, and the paper's order as a reader takes it is
+//! asserted (row `slope-failure/order-vs-paper`, references/paper.md).
+//! Writes target/figures/fig10-*.png.
 
 use std::path::Path;
 
-use cdem::analysis::safety_factors;
-use cdem::analysis::slip::{from_springs, spring_points};
+use cdem::analysis::slip::spring_points;
 use cdem::drivers::{run_watched, EndState, StageSnapshots};
 use cdem::harness::registry::{self as reg, SLIP_CIRCLE};
 use cdem::harness::reproduce::stage_figures;
+use cdem::harness::suite::slope_failure::SlopeFailure;
 use cdem::solver::State;
 
 #[test]
 fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
+    let t0 = std::time::Instant::now();
     let scene = reg::SLOPE_SLIP.scene().unwrap();
     let mut snapshots = StageSnapshots::default();
     let run = run_watched(&scene, &mut snapshots).unwrap();
+    let seconds = t0.elapsed().as_secs_f64();
     let r = run.failure.as_ref().expect("phase 2 ran");
     let tan_phi = reg::SLIP_FRICTION_DEG.to_radians().tan();
+    let f = SlopeFailure::of(&run).expect("phase 2 on the interface slip");
+    println!("elastic eq. 21: K = {:.4}; friction only (c lost): {:.4}", f.k, f.k_friction_only);
+    assert!(f.k_friction_only < 1.0, "without cohesion the surface must be over-stressed");
+    let first_step = f.first_step.expect("springs fail");
 
-    // Elastic K_i per station (springs), from the end of phase 1.
-    let mut elastic = State::new(&run.model);
-    elastic.u = r.u_elastic.clone();
-    let pts = from_springs(&run.model, &elastic.u, &elastic.springs, "slip", &SLIP_CIRCLE).unwrap();
-    let k = safety_factors(&pts, reg::SLIP_COHESION, tan_phi);
-    let friction_only = safety_factors(&pts, 0.0, tan_phi);
-    println!("elastic eq. 21: K = {:.4}; friction only (c lost): {:.4}", k.k, friction_only.k);
-    assert!(friction_only.k < 1.0, "without cohesion the surface must be over-stressed");
-
-    // Zones where K_i < 1 or >= 1, from the toe.
-    let mut zones: Vec<(bool, f64, f64)> = Vec::new(); // (weak, s0, s1)
-    for (i, p) in pts.iter().enumerate() {
-        let weak = k.k_i[i] < 1.0;
-        let edge = if i == 0 { 0.0 } else { 0.5 * (pts[i - 1].s + p.s) };
-        match zones.last_mut() {
-            Some(z) if z.0 == weak => z.2 = p.s,
-            _ => zones.push((weak, edge, p.s)),
-        }
-    }
-    let zone_of = |s: f64| zones.iter().position(|z| s <= z.2 + 1e-9).unwrap_or(zones.len() - 1);
-
-    // First and last failure step per zone.
-    let sp = &run.model.springs;
-    let iface = run.model.interfaces.iter().position(|i| i.name == "slip").unwrap() as u16;
-    let mut first = vec![usize::MAX; zones.len()];
-    let mut last = vec![0; zones.len()];
-    let mut all_failed = vec![true; zones.len()];
-    let mut first_step = usize::MAX;
-    for s in (0..sp.len()).filter(|&s| sp.interface[s] == iface) {
-        let z = zone_of(SLIP_CIRCLE.frame(run.model.x0[sp.a[s] as usize]).0);
-        match r.failed_at[s] {
-            Some(step) => {
-                first[z] = first[z].min(step);
-                last[z] = last[z].max(step);
-                first_step = first_step.min(step);
-            }
-            None => all_failed[z] = false,
-        }
-    }
     // Exactly the springs that violate eq. 17-18 at the elastic state, in
     // their own frame (recomputed here from the spring law), fail at the
     // first phase-2 step.
+    let sp = &run.model.springs;
+    let iface = run.model.interfaces.iter().position(|i| i.name == "slip").unwrap() as u16;
     let (c, t_strength) = (reg::SLIP_COHESION, reg::SLIP_TENSILE);
     for s in (0..sp.len()).filter(|&s| sp.interface[s] == iface) {
         let (a, b) = (sp.a[s] as usize, sp.b[s] as usize);
@@ -89,6 +59,8 @@ fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
         );
     }
     // And they are where K_i (circle frame, eq. 22) is lowest.
+    let mut elastic = State::new(&run.model);
+    elastic.u = r.u_elastic.clone();
     let per_spring = spring_points(&run.model, &elastic.u, &elastic.springs, "slip", &SLIP_CIRCLE).unwrap();
     let ki = |p: &cdem::analysis::SurfacePoint| (p.sigma_n * tan_phi + c) / p.tau;
     let (mut first_k, mut later_k) = (Vec::new(), Vec::new());
@@ -112,66 +84,27 @@ fn slope_fails_progressively_from_the_low_ki_zones_and_slides() {
     assert!(mean(&first_k) < 1.0 && mean(&first_k) < mean(&later_k), "the first failures are where K_i is lowest");
     assert_eq!(r.end, EndState::GlobalSliding, "the mass slides once the cohesion is lost");
 
-    // The sequence as ranks (robust to step counts).
-    let rank = |v: &[usize], z: usize| v.iter().filter(|&&x| x < v[z]).count() + 1;
-    let sequence: Vec<String> = (0..zones.len())
-        .map(|z| {
-            let (weak, s0, s1) = zones[z];
-            format!(
-                "{} {:.0}-{:.0} m K_i {}: first failure rank {}, fully failed {} (rank {})",
-                (b'a' + z as u8) as char,
-                s0,
-                s1,
-                if weak { "< 1" } else { ">= 1" },
-                rank(&first, z),
-                all_failed[z],
-                rank(&last, z)
-            )
-        })
-        .chain(std::iter::once(format!("end: {:?}", r.end)))
-        .collect();
+    // The zones, both orders, the snapshot and the paper's order.
+    let sequence = f.sequence();
     for line in &sequence {
         println!("{line}");
     }
-    // The paper (Fig. 10): discontinuities in ab and cd first, then in bc and
-    // de, then the whole mass slides. Our zones a-d play ab-de
-    // (docs/method.md section 4.3): the K_i < 1 zones among them must be
-    // fully failed before the K_i >= 1 zones, and then the mass slides.
-    let paper_zones = zones.len().min(4);
-    let order: Vec<usize> = {
-        let mut z: Vec<usize> = (0..zones.len()).collect();
-        z.sort_by_key(|&z| (rank(&last, z), z));
-        z
-    };
-    let weak_last = (0..paper_zones).filter(|&z| zones[z].0).map(|z| rank(&last, z)).max();
-    let strong_first = (0..paper_zones).filter(|&z| !zones[z].0).map(|z| rank(&last, z)).min();
-    let paper_order = paper_zones == 4
-        && (0..paper_zones).all(|z| all_failed[z])
-        && matches!((weak_last, strong_first), (Some(w), Some(s)) if w < s)
-        && r.end == EndState::GlobalSliding;
-    let ours = format!(
-        "fully failed in the order {}; then {:?}",
-        order
-            .iter()
-            .map(|&z| format!("{} (K_i {})", (b'a' + z as u8) as char, if zones[z].0 { "< 1" } else { ">= 1" }))
-            .collect::<Vec<_>>()
-            .join(", "),
-        r.end
-    );
-    let rows = [
-        cdem::harness::validation::snapshot_row(
-            "slope-failure/snapshot",
-            &sequence,
-            cdem::harness::validation::SLOPE_FAILURE_SNAPSHOT,
-            0.0,
-        ),
-        reg::row("slope-failure/order-vs-paper")
-            .compared(&ours, "ab and cd first, then bc and de, then the mass slides", paper_order, 0.0)
-            .with_note("zones a-d play ab-de; zone e (crest) is ours, see references/paper.md"),
-    ];
+    println!("{}", f.describe_start());
+    let rows = f.rows(seconds);
+    for row in &rows {
+        println!("{}: {} ({:?})", row.id, row.ours_text, row.status());
+    }
     cdem::harness::report::record("progressive_slope", &rows);
-    println!("{ours}: matches the paper's order: {paper_order}");
-    assert!(paper_order, "the paper's order: K_i < 1 zones fail first, then K_i >= 1, then the slide: {ours}");
+    assert!(
+        f.paper_order(),
+        "the paper's order: failure starts in the K_i < 1 zones, spreads to the K_i >= 1 zones, then the slide: {}",
+        f.describe_start()
+    );
+    // The check can fail: with the zones' kinds swapped the failure would
+    // start where K_i >= 1, and the row differs.
+    let mut swapped = f.clone();
+    swapped.zones.iter_mut().for_each(|z| z.weak = !z.weak);
+    assert!(!swapped.paper_order(), "swapped zones must not match the paper's order");
     insta::assert_yaml_snapshot!("slope_failure_sequence", sequence);
 
     // Fig. 10: the displacement since phase 1 at four stages on one figure

@@ -2,41 +2,49 @@
 //! factor of safety of a block on a plane (references/srm.md):
 //! `FS = (c A + W cos(theta) tan(phi)) / (W sin(theta))`, for two
 //! (theta, phi, c) sets, within 1 %; the analytic FS must also lie inside
-//! the final bracket, which is at most 0.01 wide.
+//! the final bracket, which is at most 0.01 wide. The runs and their rows are
+//! [`cdem::harness::suite::srm`] (shared with `cdem reproduce`).
 
 use cdem::drivers::run_srm;
-use cdem::harness::registry::{self as reg, BlockOnPlane, Case};
-use cdem::harness::report::{record, Check};
-
-fn check(case: Case, set: BlockOnPlane) -> Check {
-    let t0 = std::time::Instant::now();
-    let scene = case.scene().unwrap();
-    let (r, _) = run_srm(&scene, &mut |_| {}).unwrap();
-    let analytic = set.fs();
-    let fs = r.fs.expect("a bracket");
-    let [lo, hi] = r.bracket.map(Option::unwrap);
-    println!("{}: FS {fs:.4} in [{lo:.4}, {hi:.4}], analytic {analytic:.4}, {} trials", case.name, r.trials.len());
-    for t in &r.trials {
-        println!("  F = {:.4}: {:?} after {} steps", t.factor, t.outcome, t.steps);
-    }
-    assert!(hi - lo <= 0.01 + 1e-12, "bracket width {}", hi - lo);
-    assert!(lo <= analytic && analytic <= hi, "analytic {analytic} outside [{lo}, {hi}]");
-    assert!(((fs - analytic) / analytic).abs() < reg::TOL_SRM_BLOCK);
-    // The bracket's upper end is a trial that slid, not one out of steps.
-    assert_eq!(r.hi_outcome, Some(cdem::EndState::GlobalSliding));
-    assert!(r.sliding_from.is_some_and(|f| f >= hi), "{:?}", r.sliding_from);
-    assert_eq!(r.undecided, r.trials.iter().filter(|t| t.outcome == cdem::EndState::Undecided).count());
-    let id = if case.name == reg::BLOCK_SRM_FRICTION.name { "srm/block-friction" } else { "srm/block-cohesion" };
-    reg::row(id).value(fs, analytic, t0.elapsed().as_secs_f64())
-}
+use cdem::harness::registry as reg;
+use cdem::harness::report::record;
+use cdem::harness::suite::srm::{self, BRACKET_WIDTH};
 
 #[test]
 fn block_on_a_plane_srm_fs_matches_the_analytic_fs() {
-    let rows = vec![
-        check(reg::BLOCK_SRM_FRICTION, reg::BLOCK_SRM_FRICTION_SET),
-        check(reg::BLOCK_SRM_COHESION, reg::BLOCK_SRM_COHESION_SET),
-    ];
-    record("srm", &rows);
+    let cases = srm::run_all().unwrap();
+    record("srm", &cases.iter().map(|c| c.row.clone()).collect::<Vec<_>>());
+    for c in &cases {
+        let (r, analytic) = (&c.result, c.analytic);
+        let fs = r.fs.expect("a bracket");
+        let [lo, hi] = r.bracket.map(Option::unwrap);
+        println!(
+            "{}: FS {fs:.4} in [{lo:.4}, {hi:.4}], analytic {analytic:.4}, {} trials",
+            c.case.name,
+            r.trials.len()
+        );
+        for t in &r.trials {
+            println!("  F = {:.4}: {:?} after {} steps", t.factor, t.outcome, t.steps);
+        }
+        assert!(hi - lo <= BRACKET_WIDTH + 1e-12, "bracket width {}", hi - lo);
+        assert!(lo <= analytic && analytic <= hi, "analytic {analytic} outside [{lo}, {hi}]");
+        assert!(((fs - analytic) / analytic).abs() < reg::TOL_SRM_BLOCK);
+        // The bracket's upper end is a trial that slid, not one out of steps.
+        assert_eq!(r.hi_outcome, Some(cdem::EndState::GlobalSliding));
+        assert!(r.sliding_from.is_some_and(|f| f >= hi), "{:?}", r.sliding_from);
+        assert_eq!(r.undecided, r.trials.iter().filter(|t| t.outcome == cdem::EndState::Undecided).count());
+        assert!(c.row.passed(), "{:?}", c.row.defect);
+    }
+}
+
+/// The row of a reduction whose bracket misses the analytic FS fails, with the reason.
+#[test]
+fn a_bracket_that_misses_the_analytic_fs_fails_the_row() {
+    let (case, set, _) = srm::CASES[0];
+    let (r, _) = run_srm(&case.scene().unwrap(), &mut |_| {}).unwrap();
+    assert_eq!(srm::defect(&r, set.fs()), None);
+    let d = srm::defect(&r, 1.1 * set.fs()).expect("outside the bracket");
+    assert!(d.contains("outside the bracket"), "{d}");
 }
 
 #[test]

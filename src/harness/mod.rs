@@ -16,4 +16,5 @@ pub mod registry;
 pub mod report;
 pub mod reproduce;
 pub mod study;
+pub mod suite;
 pub mod validation;

@@ -17,8 +17,9 @@ use crate::drivers::{run_watched, RunResult, StageSnapshots};
 use crate::error::Error;
 use crate::fem::FemSolution;
 use crate::harness::registry::{self as reg, Case};
-use crate::harness::report::{Check, Table};
-use crate::harness::validation;
+use crate::harness::report::header::RunHeader;
+use crate::harness::report::{Check, Rules, Skips, Table};
+use crate::harness::{suite, validation};
 use crate::model::Model;
 use crate::output::figures::analysis::weak_zones;
 use crate::output::figures::section::{
@@ -54,8 +55,9 @@ pub fn reproduce(out: &Path, regenerate: bool, progress: &mut dyn FnMut(&str)) -
     fig14_wulong(&mut rep, progress)?;
     // 8. Error against run time.
     error_against_run_time(&mut rep, progress)?;
-    // 9. The rest of the validation table: the extreme suite, pySlope, the
-    // performance goals (phase-2 steps included).
+    // 9. The rest of the validation table: the extreme suite (DR and PCG),
+    // scikit-fem, the block on a plane, the ensemble, pySlope, the meshes
+    // against gmsh, the performance goals (phase-2 steps included).
     more_rows(&mut rep, progress)?;
     rep.write(t_all.elapsed().as_secs_f64(), progress)
 }
@@ -77,15 +79,18 @@ impl Report {
     /// `out/report.md`: the head, the validation table (every row of the
     /// registry, as in `cargo test`'s report), then the sections.
     fn write(mut self, seconds: f64, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
-        for (id, reason) in NOT_IN_REPRODUCE {
-            self.checks.push(reg::row(id).skipped(reason));
-        }
-        let table = Table::assemble(&reg::rows(), std::mem::take(&mut self.checks), &[], &|spec| {
+        self.checks.extend(not_in_reproduce());
+        // The registry's rules: a row is skipped only where its spec allows it.
+        let stale = std::collections::BTreeMap::new();
+        let absent = |spec: &crate::harness::report::RowSpec| {
             format!("not computed by cdem reproduce (a step failed to make it); see {}", spec.test)
-        });
+        };
+        let rules = Rules { stale: &stale, absent: &absent, skips: Skips::Registry { ci: false, also: &[] } };
+        let table = Table::assemble_with(&reg::rows(), std::mem::take(&mut self.checks), &rules);
         let failures = table.failures();
         let head = format!(
-            "# cdem reproduce\n\n{}; {} failing; {:.0} s in all.\n\n## Validation\n\n{}{}\n",
+            "# cdem reproduce\n\n{}\n{}; {} failing; {:.0} s in all.\n\n## Validation\n\n{}{}\n",
+            RunHeader::of_this_process(Path::new(".")).markdown(),
             table.counts(),
             failures.len(),
             seconds,
@@ -104,70 +109,54 @@ impl Report {
 }
 
 /// The rows of the registry that `cdem reproduce` does not compute, with the
-/// reason (they are computed by `cargo test`; the table shows them skipped).
-const NOT_IN_REPRODUCE: &[(&str, &str)] = &[
-    ("fem/skfem/column/max-abs-uz", SKFEM_ONLY),
-    ("fem/skfem/column/min-szz", SKFEM_ONLY),
-    ("fem/skfem/column/all", SKFEM_ONLY),
-    ("fem/skfem/slope/max-abs-uz", SKFEM_ONLY),
-    ("fem/skfem/slope/min-szz", SKFEM_ONLY),
-    ("fem/skfem/slope/all", SKFEM_ONLY),
-    ("fem/skfem/slope-perturbed/max-abs-uz", SKFEM_ONLY),
-    ("fem/skfem/slope-perturbed/min-szz", SKFEM_ONLY),
-    ("fem/skfem/slope-perturbed/all", SKFEM_ONLY),
-    ("lem/taylor-60", "a section built in the test: cargo test --release --test lem"),
-    ("lem/taylor-75", "a section built in the test: cargo test --release --test lem"),
-    ("lem/taylor-90", "a section built in the test: cargo test --release --test lem"),
-    ("srm/block-friction", "strength reduction of the block cases: cargo test --release --test srm"),
-    ("srm/block-cohesion", "strength reduction of the block cases: cargo test --release --test srm"),
-    ("ensemble/segment/mean", "the analytic ensemble: cargo test --release --test ensemble"),
-    ("ensemble/segment/pf", "the analytic ensemble: cargo test --release --test ensemble"),
-    ("slope-failure/snapshot", PROGRESSIVE_ONLY),
-    ("slope-failure/order-vs-paper", PROGRESSIVE_ONLY),
-    ("wulong/snapshot", WULONG_ONLY),
-    ("wulong/toe-first", WULONG_ONLY),
-    ("wulong/no-slide", WULONG_ONLY),
-    ("block/at-rest-15", BLOCK_ONLY),
-    ("block/acceleration-30", BLOCK_ONLY),
-    ("meshes/regenerated", "gmsh against the committed meshes: cargo test --release --test gmsh_regen"),
-    ("perf/srm/brittle/wall", SRM_PERF_ONLY),
-    ("perf/srm/brittle/trial-steps-mean", SRM_PERF_ONLY),
-    ("perf/srm/brittle/trial-steps-max", SRM_PERF_ONLY),
-    ("perf/srm/ductile/wall", SRM_PERF_ONLY),
-    ("perf/srm/ductile/trial-steps-mean", SRM_PERF_ONLY),
-    ("perf/srm/ductile/trial-steps-max", SRM_PERF_ONLY),
-    ("perf/ensemble/members-per-hour", ENSEMBLE_PERF_ONLY),
-    ("perf/ensemble/srm-members-per-hour", ENSEMBLE_PERF_ONLY),
-    ("perf/ensemble/two-shards-speedup", ENSEMBLE_PERF_ONLY),
-];
-const ENSEMBLE_PERF_ONLY: &str =
-    "timed ensembles of the slip-surface slope (members with cdem srm, shard processes; about 2 min): cdem perf";
-const SRM_PERF_ONLY: &str = "two strength reductions of the slip-surface slope (10-90 s each): cdem perf";
-const SKFEM_ONLY: &str = "the FEM against the recorded scikit-fem solution: cargo test --release --test fem";
-const PROGRESSIVE_ONLY: &str =
-    "the zones of the failure sequence are cut in the test: cargo test --release --test progressive_slope";
-const WULONG_ONLY: &str = "the bands and cracks are found in the test: cargo test --release --test wulong";
-const BLOCK_ONLY: &str = "physical-time run built in the test: cargo test --release --test sliding_block";
+/// reason (the table shows them skipped): the timed rows that `cargo test`
+/// skips too (with the same reasons, tests/performance.rs).
+fn not_in_reproduce() -> Vec<Check> {
+    let mut rows = crate::harness::perf::rows::srm_perf_skipped(SRM_PERF_ONLY);
+    rows.extend(crate::harness::perf::rows::ensemble_perf_skipped(ENSEMBLE_PERF_ONLY));
+    rows
+}
+const SRM_PERF_ONLY: &str =
+    "two strength reductions of 10-90 s each, measured by cargo run --release -- perf (references/performance.md)";
+const ENSEMBLE_PERF_ONLY: &str = "timed ensembles (about 2 min, shard processes of the cdem binary), measured by \
+                                  cargo run --release -- perf (references/performance.md)";
 
-/// Step 9, the rows no figure needs: the extreme suite, our Bishop against
-/// pySlope on the same circles, the study's column point, the performance
+/// Step 9, the rows no figure needs: the extreme suite under both solvers,
+/// the FEM against the committed scikit-fem values, the block on a plane
+/// (physical time, strength reduction), the analytic ensemble, our Bishop
+/// against pySlope on the same circles, the study's column point, the
+/// committed meshes against gmsh (skipped without gmsh), the performance
 /// goals (measured in this run; phase 2 of the slip-surface slope with both
-/// masses too, not its strength reductions: [`NOT_IN_REPRODUCE`]).
+/// masses too, not its strength reductions: [`not_in_reproduce`]).
 fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
-    progress("extreme suite");
-    for case in reg::extreme_cases() {
-        let r = run_scene(&case.scene()?, &mut |_, _| {})?;
-        rep.checks.push(validation::extreme_row(&case, &r));
+    let root = Path::new(".");
+    progress("extreme suite (DR and PCG)");
+    for run in suite::extreme::run_all()? {
+        rep.checks.push(run.row);
     }
-    rep.checks.extend(validation::pyslope_rows(Path::new("."))?);
+    progress("FEM against scikit-fem (references/skfem.json)");
+    for case in suite::skfem::cases(root)? {
+        rep.checks.extend(case.rows);
+    }
+    progress("block on a plane: physical time, strength reduction");
+    rep.checks.push(suite::block::at_rest()?.1);
+    rep.checks.push(suite::block::sliding()?.1);
+    for case in suite::srm::run_all()? {
+        rep.checks.push(case.row);
+    }
+    progress("analytic ensemble");
+    rep.checks.extend(suite::ensemble::segment(root)?.rows);
+    rep.checks.extend(validation::pyslope_rows(root)?);
     let (cdem, fem) = crate::harness::study::column_base_point()?;
     rep.checks.push(reg::row("study/column/cdem-l2").value(cdem, 0.0, 0.0));
     rep.checks.push(reg::row("study/column/fem-l2").value(fem, 0.0, 0.0));
+    progress("committed meshes against gmsh");
+    rep.checks.push(suite::meshes::regenerated_row(root));
     progress("performance goals");
-    let (scene, model) = crate::harness::perf::headline::paper_slope(Path::new("."))?;
-    let h = crate::harness::perf::headline::headline(Path::new("."), &scene, &model, progress)?;
+    let (scene, model) = crate::harness::perf::headline::paper_slope(root)?;
+    let h = crate::harness::perf::headline::headline(root, &scene, &model, progress)?;
     rep.checks.extend(crate::harness::perf::rows::perf_rows(&h));
-    let phase2 = crate::harness::perf::failure::phase2_figure(Path::new("."), progress)?;
+    let phase2 = crate::harness::perf::failure::phase2_figure(root, progress)?;
     rep.checks.extend(crate::harness::perf::rows::phase2_rows(&phase2));
     Ok(())
 }
@@ -330,6 +319,7 @@ fn limit_equilibrium(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result
     let paper = crate::lem::analyse(&reg::LEM_PAPER_SLOPE.lem_input()?)?;
     rep.checks.extend(validation::acads_rows(&acads));
     rep.checks.push(validation::paper_lem_row(&paper));
+    rep.checks.extend(crate::harness::suite::taylor::rows()?);
     Ok(paper.fs.bishop.unwrap_or(f64::NAN))
 }
 
@@ -478,37 +468,73 @@ fn arc_x() -> impl Fn(f64) -> f64 {
     move |s| xc + r * (a0 + dir * s / r).cos()
 }
 
-/// Step 6, Fig. 10: progressive failure of the paper slope on its slip circle.
+/// Step 6, Fig. 10: progressive failure of the paper slope on its slip
+/// circle, and its rows (the failure order, [`suite::slope_failure`]).
 fn fig10_slope_failure(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
-    progressive_failure(rep, "slope", reg::SLOPE_SLIP, "fig10", progress)
+    let Some((run, seconds)) = progressive_failure(rep, "slope", reg::SLOPE_SLIP, "fig10", progress)? else {
+        return Ok(());
+    };
+    if let Some(f) = suite::slope_failure::SlopeFailure::of(&run) {
+        let _ = writeln!(
+            rep.md,
+            "Zones of the slip circle (elastic K_i against 1), from the toe: {}.\n",
+            f.describe_start()
+        );
+        rep.checks.extend(f.rows(seconds));
+    }
+    Ok(())
 }
 
-/// Step 7, Fig. 14: progressive failure of the Wulong slope.
+/// Step 7, Fig. 14: progressive failure of the Wulong slope, and its rows
+/// ([`suite::wulong`]).
 fn fig14_wulong(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
-    progressive_failure(rep, "Wulong", reg::WULONG, "fig14", progress)
+    let Some(((run, snapshots), seconds)) = progressive_run(rep, "Wulong", reg::WULONG, "fig14", progress)? else {
+        return Ok(());
+    };
+    let scene = reg::WULONG.scene()?;
+    if let Some(r) = suite::wulong::from_run(run, snapshots) {
+        rep.checks.extend(suite::wulong::analyse(&r, &scene, seconds)?.rows);
+    }
+    Ok(())
 }
 
-/// Both phases of a scene with `[failure]` (skipped if the scene is absent or
-/// has none): a summary paragraph and the displacement since phase 1 at three
-/// stages ([`stage_figures`], files `<prefix>-*.png`).
+/// A run with phase 2, its stage snapshots, and its wall time (s).
+type ProgressiveRun = ((RunResult, StageSnapshots), f64);
+
+/// [`progressive_run`] without the stage snapshots: the run and its wall time.
 fn progressive_failure(
     rep: &mut Report,
     name: &str,
     case: Case,
     prefix: &str,
     progress: &mut dyn FnMut(&str),
-) -> Result<(), Error> {
+) -> Result<Option<(RunResult, f64)>, Error> {
+    Ok(progressive_run(rep, name, case, prefix, progress)?.map(|((run, _), t)| (run, t)))
+}
+
+/// Both phases of a scene with `[failure]` (None if the scene is absent or
+/// has none): a summary paragraph and the displacement since phase 1 at
+/// four stages ([`stage_figures`], files `<prefix>-*.png`); returns the run,
+/// its stage snapshots and its wall time.
+fn progressive_run(
+    rep: &mut Report,
+    name: &str,
+    case: Case,
+    prefix: &str,
+    progress: &mut dyn FnMut(&str),
+) -> Result<Option<ProgressiveRun>, Error> {
     if !case.path().exists() {
-        return Ok(());
+        return Ok(None);
     }
     progress(&format!("progressive failure: {name}"));
     let scene = case.scene()?;
     if scene.failure.is_none() {
-        return Ok(());
+        return Ok(None);
     }
     let t0 = Instant::now();
     let mut snapshots = StageSnapshots::default();
     let pr = run_watched(&scene, &mut snapshots)?;
+    let seconds = t0.elapsed().as_secs_f64();
     let f = pr.failure.as_ref().expect("a [failure] scene has phase 2");
     let last = f.stages.last().copied();
     let _ = writeln!(
@@ -517,7 +543,7 @@ fn progressive_failure(
         pr.elastic.steps,
         f.end,
         f.report.steps,
-        t0.elapsed().as_secs_f64(),
+        seconds,
         last.map_or(0, |s| s.failed_tension),
         last.map_or(0, |s| s.failed_shear),
         last.map_or(0.0, |s| s.max_displacement)
@@ -525,7 +551,7 @@ fn progressive_failure(
     for (title, file) in stage_figures(&pr, &snapshots, &rep.out, prefix)? {
         rep.figure(&title, &file);
     }
-    Ok(())
+    Ok(Some(((pr, snapshots), seconds)))
 }
 
 /// Step 8, error against run time (no paper figure): the study
