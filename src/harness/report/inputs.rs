@@ -57,7 +57,8 @@ pub fn declared(id: &str, source: &str, root: &Path) -> Option<Vec<String>> {
     let (prefix, files) = DECLARED.iter().filter(|(p, _)| id.starts_with(p)).max_by_key(|(p, _)| p.len())?;
     let mut out: Vec<String> = files.iter().map(|f| f.to_string()).collect();
     if *prefix == "extreme/" {
-        let name = id.trim_start_matches(prefix);
+        // `extreme/<case>` (PCG) and `extreme/<case>/dr` read the same scene.
+        let name = id.trim_start_matches(prefix).trim_end_matches("/dr");
         out.push(format!("verification/extreme/{name}.toml"));
     }
     if *prefix == "meshes/regenerated" {
