@@ -8,28 +8,11 @@
 //! except in CI (`CI=true`), where gmsh must run.
 
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-use cdem::mesh::gmsh::{gmsh_available, mesh_drift, read_msh, regenerate};
+use cdem::harness::suite::meshes::{geos, regenerated_row};
+use cdem::mesh::gmsh::{gmsh_available, regenerate};
 use cdem::Error;
-
-fn case_geos() -> Vec<PathBuf> {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("verification");
-    let mut dirs = vec![root.join("extreme"), root.join("study"), root.join("tutorial")];
-    for case in std::fs::read_dir(root.join("cases")).expect("verification/cases exists") {
-        dirs.push(case.expect("readable directory entry").path());
-    }
-    let mut geos = Vec::new();
-    for dir in dirs {
-        for file in std::fs::read_dir(&dir).into_iter().flatten().flatten() {
-            if file.path().extension().is_some_and(|e| e == "geo") {
-                geos.push(file.path());
-            }
-        }
-    }
-    geos.sort();
-    geos
-}
 
 /// True (after a note) if gmsh is not on PATH; panics instead in CI.
 fn skip_without_gmsh(what: &str) -> bool {
@@ -46,42 +29,16 @@ fn skip_without_gmsh(what: &str) -> bool {
 
 #[test]
 fn committed_case_meshes_match_their_geo() {
-    let spec = cdem::harness::registry::row("meshes/regenerated");
+    // The row as `cdem reproduce` computes it (harness::suite::meshes).
     if skip_without_gmsh("the regeneration check") {
-        cdem::harness::report::record("gmsh_regen", &[spec.skipped("gmsh is not on PATH (it must be in CI)")]);
+        cdem::harness::report::record("gmsh_regen", &[regenerated_row(Path::new("."))]);
         return;
     }
-    let t0 = std::time::Instant::now();
-    let geos = case_geos();
-    assert!(!geos.is_empty(), "no .geo under verification/cases/*/");
-    let dir = std::env::temp_dir().join(format!("cdem-gmsh-regen-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temporary directory");
-    let mut failures = Vec::new();
-    for geo in &geos {
-        let committed = geo.with_extension("msh");
-        let fresh = dir.join(committed.file_name().expect("a file name"));
-        regenerate(geo, &fresh).unwrap_or_else(|e| panic!("{}: {e}", geo.display()));
-        let a = read_msh(&committed).unwrap_or_else(|e| panic!("{}: {e}", committed.display()));
-        let b = read_msh(&fresh).unwrap_or_else(|e| panic!("{}: {e}", fresh.display()));
-        if let Some(drift) = mesh_drift(&a, &b, 1e-9) {
-            failures.push(format!(
-                "{}: {drift} (regenerate it with `gmsh {} -3 -format msh41 -o {}`)",
-                committed.display(),
-                geo.display(),
-                committed.display()
-            ));
-        }
-    }
-    let _ = std::fs::remove_dir_all(&dir);
-    let ours = format!("{} of {} meshes equal", geos.len() - failures.len(), geos.len());
-    let row = spec.compared(
-        &ours,
-        &format!("{} of {} meshes equal", geos.len(), geos.len()),
-        failures.is_empty(),
-        t0.elapsed().as_secs_f64(),
-    );
-    cdem::harness::report::record("gmsh_regen", &[row]);
-    assert!(failures.is_empty(), "committed meshes differ from their .geo:\n{}", failures.join("\n"));
+    let row = regenerated_row(Path::new(env!("CARGO_MANIFEST_DIR")));
+    println!("{}", row.ours_text);
+    cdem::harness::report::record("gmsh_regen", std::slice::from_ref(&row));
+    assert!(geos(Path::new(env!("CARGO_MANIFEST_DIR"))).iter().any(|g| g.ends_with("tutorial/two-layer.geo")));
+    assert!(row.passed(), "committed meshes differ from their .geo: {}", row.defect.clone().unwrap_or_default());
 }
 
 /// gmsh exits with status 0 on a syntax error (and writes an empty mesh):

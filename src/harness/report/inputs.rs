@@ -14,13 +14,15 @@
 
 use std::path::Path;
 
-/// The committed case meshes and their sources, which `meshes/regenerated` compares.
+/// The committed meshes and their sources, which `meshes/regenerated`
+/// compares: every case folder under this one, and [`MESH_DIRS`].
 const CASE_DIRS: &str = "verification/cases";
+const MESH_DIRS: [&str; 3] = ["verification/extreme", "verification/study", "verification/tutorial"];
 
 /// Row-id prefix, and the files (relative to the repository root) its rows
 /// read besides their source. The extreme rows read
 /// `verification/extreme/<name>.toml` ([`declared`]); `meshes/regenerated`
-/// every `.geo` and `.msh` under [`CASE_DIRS`].
+/// every `.geo` and `.msh` under [`CASE_DIRS`] and [`MESH_DIRS`].
 #[rustfmt::skip]
 pub const DECLARED: &[(&str, &[&str])] = &[
     ("column/springs/", &["verification/cases/column/column.toml"]),
@@ -89,17 +91,24 @@ pub fn declared(id: &str, source: &str, root: &Path) -> Option<Vec<String>> {
 
 /// Every `.geo` and `.msh` in the directories under [`CASE_DIRS`].
 fn case_meshes(root: &Path) -> Vec<String> {
-    let mut out = Vec::new();
+    let mut dirs: Vec<String> = MESH_DIRS.iter().map(|d| d.to_string()).collect();
     for dir in std::fs::read_dir(root.join(CASE_DIRS)).into_iter().flatten().flatten() {
-        for f in std::fs::read_dir(dir.path()).into_iter().flatten().flatten() {
+        if let Some(d) = dir.file_name().to_str() {
+            dirs.push(format!("{CASE_DIRS}/{d}"));
+        }
+    }
+    let mut out = Vec::new();
+    for dir in dirs {
+        for f in std::fs::read_dir(root.join(&dir)).into_iter().flatten().flatten() {
             let path = f.path();
             if path.extension().is_some_and(|e| e == "geo" || e == "msh") {
-                if let (Some(d), Some(n)) = (dir.file_name().to_str(), path.file_name().and_then(|n| n.to_str())) {
-                    out.push(format!("{CASE_DIRS}/{d}/{n}"));
+                if let Some(n) = path.file_name().and_then(|n| n.to_str()) {
+                    out.push(format!("{dir}/{n}"));
                 }
             }
         }
     }
+    out.sort();
     out
 }
 
