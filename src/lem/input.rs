@@ -214,6 +214,11 @@ struct SearchToml {
     parallel: bool,
 }
 
+/// Component `k` of an optional range `[lo, hi]`.
+fn pair(a: &mut Option<[f64; 2]>, k: Option<usize>) -> Option<&mut f64> {
+    a.as_mut()?.get_mut(k?)
+}
+
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct GridToml {
@@ -471,6 +476,48 @@ struct SceneLemMaterial {
 }
 
 impl SceneLem {
+    /// The real number that a key path under `[lem]` names, as path segments
+    /// (`material[0].cohesion` is `[("material", Some(0)), ("cohesion", None)]`):
+    /// what an ensemble draws. None for a key that names no real number the
+    /// table gives (an integer setting, an absent optional value).
+    pub fn number_mut(&mut self, path: &[(&str, Option<usize>)]) -> Option<&mut f64> {
+        match path {
+            [("y_plane", None)] => self.y_plane.as_mut(),
+            [("z_min", None)] => self.z_min.as_mut(),
+            [("material", Some(i)), (f, None)] => self.material.get_mut(*i).and_then(|m| match *f {
+                "cohesion" => Some(&mut m.cohesion),
+                "friction_angle" => Some(&mut m.friction_angle),
+                "unit_weight" => m.unit_weight.as_mut(),
+                _ => None,
+            }),
+            [("circle", None), (f, None)] => self.circle.as_mut().and_then(|c| match *f {
+                "xc" => Some(&mut c.xc),
+                "zc" => Some(&mut c.zc),
+                "r" => Some(&mut c.r),
+                _ => None,
+            }),
+            [("search", None), rest @ ..] => {
+                let search = self.search.as_mut()?;
+                match rest {
+                    [("min_depth", None)] => search.min_depth.as_mut(),
+                    [("min_width", None)] => search.min_width.as_mut(),
+                    [("grid", None), (f, k)] => search.grid.as_mut().and_then(|g| match *f {
+                        "x" => pair(&mut g.x, *k),
+                        "z" => pair(&mut g.z, *k),
+                        _ => None,
+                    }),
+                    [("entry_exit", None), (f, k)] => search.entry_exit.as_mut().and_then(|e| match *f {
+                        "exit" => pair(&mut e.exit, *k),
+                        "entry" => pair(&mut e.entry, *k),
+                        _ => None,
+                    }),
+                    _ => None,
+                }
+            }
+            _ => None,
+        }
+    }
+
     /// The `(cohesion (Pa), friction angle (deg))` of a volume group's
     /// `[[lem.material]]`, if it has one.
     pub fn strength_of(&self, group: &str) -> Option<(f64, f64)> {

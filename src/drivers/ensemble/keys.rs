@@ -7,9 +7,8 @@
 //! A key names a real number the input carries: a field of type `f64`, or an
 //! `Option<f64>` the file gives. Integers (`solver.max_steps`,
 //! `analysis.slices`), strings and absent optional numbers are not keys
-//! ([`UnknownKey`]). The numbers of a scene's `[lem]` table (`lem.…`) are
-//! set on that table and the table read again, since the scene's
-//! [`crate::lem::SceneLem`] keeps its fields to itself.
+//! ([`UnknownKey`]). A scene's `[lem]` numbers (`lem.…`) are those
+//! [`crate::lem::SceneLem::number_mut`] names.
 
 use crate::error::SceneError;
 use crate::lem::{Facing, LemInput, LemSection, LowerBound, Material, Mode, Zone};
@@ -71,7 +70,7 @@ fn analysis<'a>(a: &'a mut AnalysisSpec, segs: &Segs) -> Option<&'a mut f64> {
     }
 }
 
-/// The number `key` names in a scene (not its `[lem]` table: see the module doc).
+/// The number `key` names in a scene, its `[lem]` table included.
 pub fn scene_number<'a>(s: &'a mut Scene, key: &str) -> Result<&'a mut f64, UnknownKey> {
     let unknown = || UnknownKey { key: key.to_string() };
     let segs = segments(key).ok_or_else(unknown)?;
@@ -110,29 +109,10 @@ pub fn scene_number<'a>(s: &'a mut Scene, key: &str) -> Result<&'a mut f64, Unkn
             s.failure.as_mut().and_then(|f| f.sliding_displacement.as_mut())
         }
         [("analysis", None), rest @ ..] => s.analysis.as_mut().and_then(|a| analysis(a, rest)),
+        [("lem", None), rest @ ..] => s.lem.as_mut().and_then(|l| l.number_mut(rest)),
         _ => None,
     };
     found.ok_or_else(unknown)
-}
-
-/// The number `key` names in a `toml` table (a scene's `[lem]` table, whose
-/// typed form keeps its fields private).
-pub fn table_number<'a>(table: &'a mut toml::Table, key: &str) -> Result<&'a mut toml::Value, UnknownKey> {
-    let unknown = || UnknownKey { key: key.to_string() };
-    let segs = segments(key).ok_or_else(unknown)?;
-    let (last, head) = segs.split_last().ok_or_else(unknown)?;
-    let step = |t: &'a mut toml::Table, (name, index): (&str, Option<usize>)| -> Option<&'a mut toml::Value> {
-        let v = t.get_mut(name)?;
-        match index {
-            None => Some(v),
-            Some(i) => v.as_array_mut()?.get_mut(i),
-        }
-    };
-    let mut t = table;
-    for &s in head {
-        t = step(t, s).and_then(toml::Value::as_table_mut).ok_or_else(unknown)?;
-    }
-    step(t, *last).filter(|v| v.is_float() || v.is_integer()).ok_or_else(unknown)
 }
 
 /// Where a LEM file's `[[material]]` went: the background (no zone) or the

@@ -24,7 +24,7 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use crate::error::SceneError;
-use crate::lem::{self, LemInput, Method, Mode, SceneLem};
+use crate::lem::{self, LemInput, Method, Mode};
 use crate::mesh::perturb::SplitMix64;
 use crate::scene::{Analysis, Distribution, EnsembleSpec, LemSurface, Scene};
 use crate::summary::EndState;
@@ -136,8 +136,6 @@ enum Source {
         scene: Box<Scene>,
         /// Whether the file has a `[perturbation]` table (members then get their seeds).
         perturbed: bool,
-        /// The scene's `[lem]` table as written, for the keys `lem.…` ([`keys`]).
-        lem: Option<toml::Table>,
     },
     Lem(Box<keys::LemParts>),
 }
@@ -183,8 +181,7 @@ impl EnsembleInput {
                 .into());
             }
             scene.ensemble = None;
-            let lem = table.get("lem").and_then(toml::Value::as_table).cloned();
-            Source::Scene { scene: Box::new(scene), perturbed: table.contains_key("perturbation"), lem }
+            Source::Scene { scene: Box::new(scene), perturbed: table.contains_key("perturbation") }
         } else {
             let input = LemInput::from_toml(&text, &base_dir, path)?;
             let materials = table.get("material").and_then(toml::Value::as_array);
@@ -221,18 +218,7 @@ impl EnsembleInput {
         let mut probe = source.clone();
         for (i, r) in spec.random.iter().enumerate() {
             let bad_key = |e: keys::UnknownKey| SceneError::invalid(format!("ensemble.random[{i}].key"), e.to_string());
-            let v = match probe.number(&r.key).map_err(bad_key)? {
-                Number::Real(v) => *v,
-                Number::Toml(v) => {
-                    let n = v.as_float().or(v.as_integer().map(|n| n as f64)).unwrap_or(f64::NAN);
-                    // A real number of `[lem]`, not an integer setting (`lem.slices`).
-                    *v = toml::Value::Float(n);
-                    if probe.scene_lem().is_err() {
-                        return Err(bad_key(keys::UnknownKey { key: r.key.clone() }).into());
-                    }
-                    n
-                }
-            };
+            let v = *probe.number(&r.key).map_err(bad_key)?;
             let mean = r.mean.unwrap_or(v);
             if r.distribution == Distribution::Lognormal && mean <= 0.0 {
                 return Err(SceneError::invalid(
@@ -289,22 +275,13 @@ impl EnsembleInput {
         let mut source = self.source.clone();
         let unknown = |e: keys::UnknownKey| SceneError::invalid("ensemble.random", e.to_string());
         for d in draws {
-            match source.number(&d.key).map_err(unknown)? {
-                Number::Real(v) => *v = d.value,
-                Number::Toml(v) => *v = toml::Value::Float(d.value),
-            }
+            *source.number(&d.key).map_err(unknown)? = d.value;
         }
         match source {
-            Source::Scene { mut scene, perturbed, lem } => {
+            Source::Scene { mut scene, perturbed } => {
                 // A drawn perturbation.ratio perturbs with the member's seed too.
                 if perturbed || draws.iter().any(|d| d.key.starts_with("perturbation.")) {
                     scene.perturbation.seed = seed;
-                }
-                if let Some(lem) = lem.filter(|_| draws.iter().any(|d| d.key.starts_with("lem."))) {
-                    let read: SceneLem = toml::Value::Table(lem).try_into().map_err(|e: toml::de::Error| {
-                        SceneError::Syntax { path: self.path.clone(), message: format!("[lem]: {e}") }
-                    })?;
-                    scene.lem = Some(read);
                 }
                 scene.validate()?;
                 Ok(MemberInput::Scene(scene))
@@ -314,31 +291,12 @@ impl EnsembleInput {
     }
 }
 
-/// A number of the mean input that a key names.
-enum Number<'a> {
-    Real(&'a mut f64),
-    /// In a scene's `[lem]` table (see [`keys`]).
-    Toml(&'a mut toml::Value),
-}
-
 impl Source {
-    /// A scene's `[lem]` read from its table as it now stands.
-    fn scene_lem(&self) -> Result<Option<SceneLem>, toml::de::Error> {
+    /// The number of the mean input that a key names.
+    fn number(&mut self, key: &str) -> Result<&mut f64, keys::UnknownKey> {
         match self {
-            Source::Scene { lem: Some(lem), .. } => toml::Value::Table(lem.clone()).try_into().map(Some),
-            _ => Ok(None),
-        }
-    }
-
-    fn number(&mut self, key: &str) -> Result<Number<'_>, keys::UnknownKey> {
-        match self {
-            Source::Scene { lem: Some(lem), .. } if key.starts_with("lem.") => {
-                keys::table_number(lem, &key["lem.".len()..])
-                    .map(Number::Toml)
-                    .map_err(|_| keys::UnknownKey { key: key.to_string() })
-            }
-            Source::Scene { scene, .. } => keys::scene_number(scene, key).map(Number::Real),
-            Source::Lem(parts) => parts.number(key).map(Number::Real),
+            Source::Scene { scene, .. } => keys::scene_number(scene, key),
+            Source::Lem(parts) => parts.number(key),
         }
     }
 }
