@@ -72,7 +72,7 @@ fn with_convergence(c: Check, r: &RunResult) -> Check {
 }
 
 /// `E_j / L` of the default joints of a run (Pa/m).
-fn joint_stiffness(r: &RunResult) -> f64 {
+pub fn joint_stiffness(r: &RunResult) -> f64 {
     let j = &r.model.interfaces[0].props;
     j.normal_modulus / j.thickness
 }

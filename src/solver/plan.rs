@@ -76,14 +76,6 @@ impl PhasePlan {
         StopRules::new(self.tolerance, self.budget, sliding, self.history_every)
     }
 
-    /// The dynamic-relaxation solver, if the phase steps by DR.
-    pub fn solver(&self) -> Option<&Solver> {
-        match &self.method {
-            Method::Dr(s) => Some(s),
-            Method::Pcg(_) => None,
-        }
-    }
-
     /// Takes the dynamic-relaxation solver out (phase 2 goes on with it).
     pub fn into_solver(self) -> Option<Solver> {
         match self.method {
@@ -103,7 +95,7 @@ impl PhasePlan {
         sliding: Option<Sliding>,
         observer: &mut dyn Observer,
     ) -> Result<RunReport, SolveError> {
-        let rules = StopRules::new(self.tolerance, self.budget, sliding, self.history_every);
+        let rules = self.rules(sliding);
         match &mut self.method {
             Method::Dr(solver) => {
                 solver.set_failure(model, failure);
