@@ -147,10 +147,11 @@ impl Reduction {
             )
             .into());
         }
-        if !run.model.has_breakable_interface() {
+        if !run.model.has_breakable_interface() && !run.model.has_plastic_blocks() {
             return Err(SceneError::invalid(
                 "interface",
-                "strength reduction needs a breakable interface (a `strength` on [joints] or an [[interface]])",
+                "strength reduction needs a strength to reduce: a `strength` on [joints], an [[interface]] \
+                 or a [[material]]",
             )
             .into());
         }
@@ -168,6 +169,7 @@ impl Reduction {
         let t = std::time::Instant::now();
         let mut state = self.elastic.clone();
         state.joints = self.strengths.reduced(factor);
+        state.rock.reduce(factor);
         self.plan.restart();
         let setup_s = t.elapsed().as_secs_f64();
         let r = failure::run(&mut self.plan, &self.model, &mut state, &self.params, false, watch)?;

@@ -12,6 +12,7 @@ use crate::mesh::shape::{cross, dot, norm, sub, CellDefect};
 use crate::mesh::Mesh;
 use crate::physics::element::element_operators;
 use crate::physics::material::{Material, MaterialLaw, YoungPoisson};
+use crate::physics::plastic::PlasticCells;
 use crate::physics::spring::Springs;
 
 /// Builds the model: 1. perturb nodes, 2. classify interfaces, 3. make node
@@ -63,6 +64,7 @@ pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
     let materials_of_cell = cell_materials(mesh, spec)?;
     let materials = spec_materials(spec);
     let mut el = Elements::default();
+    let mut plastic = PlasticCells::default();
     let mut mass = vec![0.0; n_nodes];
     el.offset.push(0);
     for (c, cell) in mesh.cells.iter().enumerate() {
@@ -74,6 +76,7 @@ pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
         for (k, &id) in ids.iter().enumerate() {
             mass[id as usize] += op.mass[k];
         }
+        plastic.push(cell.kind, &corners, !materials[mat as usize].law.condenses());
         el.kind.push(cell.kind);
         el.nodes.extend_from_slice(&ids);
         el.offset.push(el.nodes.len());
@@ -107,6 +110,7 @@ pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
         fixed,
         f_ext,
         elements: el,
+        plastic,
         springs,
         materials,
         interfaces,
@@ -122,7 +126,7 @@ pub fn spec_materials(spec: &ModelSpec) -> Vec<Material> {
         .map(|m| Material {
             lame: YoungPoisson { young: m.youngs_modulus, poisson: m.poisson_ratio }.into(),
             density: m.density,
-            law: MaterialLaw::LinearElastic,
+            law: m.strength.map_or(MaterialLaw::LinearElastic, |s| MaterialLaw::MohrCoulomb(s.into())),
         })
         .collect()
 }

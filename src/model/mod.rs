@@ -18,6 +18,7 @@ use crate::mesh::CellKind;
 use crate::physics::element::element_stress;
 use crate::physics::joint::{JointProps, JointState};
 use crate::physics::material::Material;
+use crate::physics::plastic::{PlasticCells, RockState};
 use crate::physics::spring::Springs;
 use crate::physics::tet_operator::TetOperators;
 
@@ -127,6 +128,8 @@ pub struct Model {
     /// External force (gravity), `3 i + d` (N).
     pub f_ext: Vec<f64>,
     pub elements: Elements,
+    /// Per-tetrahedron operators of the elements whose material yields.
+    pub plastic: PlasticCells,
     pub springs: Springs,
     pub materials: Vec<Material>,
     pub interfaces: Vec<Interface>,
@@ -158,6 +161,17 @@ impl Model {
     pub fn joint_state(&self) -> JointState {
         let strengths: Vec<_> = self.interfaces.iter().map(|i| i.props.strength).collect();
         JointState::new(&self.springs.interface, &strengths)
+    }
+
+    /// Each material's strength and every tetrahedron elastic: the rock
+    /// state a run starts from.
+    pub fn rock_state(&self) -> RockState {
+        RockState::new(self.materials.iter().map(|m| m.law.strength()).collect(), self.elements.len())
+    }
+
+    /// Whether any element's material yields (has a strength).
+    pub fn has_plastic_blocks(&self) -> bool {
+        self.plastic.any()
     }
 
     /// Whether any interface is breakable (has a strength).

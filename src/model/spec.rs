@@ -8,6 +8,7 @@ use serde::Deserialize;
 
 pub use crate::physics::joint::Softening;
 use crate::physics::joint::{JointProps, JointStrength};
+use crate::physics::material::RockStrength;
 
 /// The model's inputs, borrowed from a scene (or made by hand in a test).
 #[derive(Debug, Clone, Copy)]
@@ -55,6 +56,37 @@ pub struct MaterialSection {
     pub youngs_modulus: f64,
     pub poisson_ratio: f64,
     pub density: f64,
+    /// Makes the blocks of this group a Mohr-Coulomb rock mass that yields
+    /// in the failure phase; absent: linear elastic in every phase.
+    pub strength: Option<RockStrengthSection>,
+}
+
+/// Strength of a Mohr-Coulomb rock mass (`[[material]] strength`).
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RockStrengthSection {
+    /// Cohesion `c` (Pa).
+    pub cohesion: f64,
+    /// Friction angle `phi` (degrees, in [0, 90)).
+    pub friction_angle: f64,
+    /// Tension cut-off `T` (Pa, >= 0). Default: none beyond the
+    /// Mohr-Coulomb apex `c / tan(phi)` (a larger value is capped there).
+    pub tensile: Option<f64>,
+    /// Dilation angle `psi` (degrees, in [0, phi]). Default 0: plastic
+    /// shear flow without volume change, FLAC's default.
+    #[serde(default)]
+    pub dilation_angle: f64,
+}
+
+impl From<RockStrengthSection> for RockStrength {
+    fn from(s: RockStrengthSection) -> Self {
+        Self {
+            cohesion: s.cohesion,
+            tan_phi: s.friction_angle.to_radians().tan(),
+            tensile: s.tensile.unwrap_or(f64::INFINITY),
+            tan_psi: s.dilation_angle.to_radians().tan(),
+        }
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]

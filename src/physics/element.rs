@@ -60,6 +60,8 @@ pub fn element_operators(
     let mut grad = vec![[0.0; 3]; n];
     let mut point_mass = vec![0.0; points.len()];
     let mut g = vec![[0.0; 3]; n];
+    let mixed = !material.law.condenses();
+    let mut per_tet = Vec::new();
     for tet in &dec.tets {
         let (gn, vt) = tet_gradients([points[tet[0]], points[tet[1]], points[tet[2]], points[tet[3]]]);
         for gc in g.iter_mut() {
@@ -81,10 +83,31 @@ pub fn element_operators(
                 grad[c][i] += vt * g[c][i] / volume;
             }
         }
-        add_isotropic_stiffness(&mut k, &g, vt, material.lame);
+        match mixed {
+            true => per_tet.push((g.clone(), vt)),
+            false => add_isotropic_stiffness(&mut k, &g, vt, material.lame),
+        }
+    }
+    if mixed {
+        mixed_stiffness(&mut k, &per_tet, &grad, volume, material.lame);
     }
     let mass = (0..n).map(|c| (0..points.len()).map(|p| dec.weights[p][c] * point_mass[p]).sum()).collect();
     Ok(ElementOperators { k, grad, mass, volume })
+}
+
+/// The mixed (B-bar) stiffness of a cell whose material yields
+/// ([`crate::physics::plastic`]): `sum_t V_t K_dev(g_t) + V K g g^T` with `K`
+/// the bulk modulus, from each tetrahedron's corner gradients `g_t` and
+/// volume `V_t` and the cell's volume-averaged gradients `g`: the
+/// volumetric strain is the cell's average, the deviatoric one each
+/// tetrahedron's own. Added to `k`.
+pub fn mixed_stiffness(k: &mut [f64], tets: &[(Vec<[f64; 3]>, f64)], grad: &[[f64; 3]], volume: f64, lame: Lame) {
+    let deviatoric = Lame { lambda: -2.0 * lame.mu / 3.0, mu: lame.mu };
+    for (g, v) in tets {
+        add_isotropic_stiffness(k, g, *v, deviatoric);
+    }
+    let bulk = Lame { lambda: lame.lambda + 2.0 * lame.mu / 3.0, mu: 0.0 };
+    add_isotropic_stiffness(k, grad, volume, bulk);
 }
 
 /// Adds `w (lambda g_c g_d^T + mu (g_c . g_d) I + mu g_d g_c^T)` to every

@@ -18,8 +18,11 @@
 //! elastic condenses to `K_e`).
 
 pub mod damping;
+pub mod elasticity;
 pub mod element;
 pub mod joint;
 pub mod material;
+pub mod mohr_coulomb;
+pub mod plastic;
 pub mod spring;
 pub mod tet_operator;

@@ -65,7 +65,7 @@ impl TetTopology {
         Self { kind, n_corners: dec.n_corners, faces, base, tets }
     }
 
-    fn has_body_point(&self) -> bool {
+    pub fn has_body_point(&self) -> bool {
         self.base >= self.n_corners
     }
 }
@@ -100,31 +100,8 @@ pub fn tet_operator(kind: CellKind, corners: &[[f64; 3]]) -> Result<Vec<[f64; 9]
 /// displacement `u` (3 per node). Steps 1-3 of the module documentation.
 #[inline]
 pub fn tet_element_force(topo: &TetTopology, b: &[[f64; 9]], lame: Lame, nodes: &[u32], u: &[f64], f_e: &mut [f64]) {
-    let n = topo.n_corners;
     let Lame { lambda, mu } = lame;
-
-    // 1. Point displacements relative to the base point, d_p = (T u)_p - u_r.
-    let mut d = [[0.0; 3]; MAX_POINTS];
-    for (dc, &node) in d.iter_mut().zip(nodes) {
-        let k = 3 * node as usize;
-        dc.copy_from_slice(&u[k..k + 3]);
-    }
-    let u_r = if topo.has_body_point() { mean(&d[..n]) } else { d[topo.base] };
-    for dc in &mut d[..n] {
-        for i in 0..3 {
-            dc[i] -= u_r[i];
-        }
-    }
-    for (fi, face) in topo.faces.iter().enumerate() {
-        let mut s = [0.0; 3];
-        for &c in *face {
-            for i in 0..3 {
-                s[i] += d[c][i];
-            }
-        }
-        let w = 1.0 / face.len() as f64;
-        d[n + fi] = s.map(|v| w * v);
-    }
+    let d = point_displacements(topo, nodes, u);
     // d[base] is zero: the base point is the reference.
 
     // 2. Per tetrahedron: gradient, stress, nodal forces on vertices 0-2.
@@ -151,8 +128,46 @@ pub fn tet_element_force(topo: &TetTopology, b: &[[f64; 9]], lame: Lame, nodes: 
             fp[2] += sxz * bx + syz * by + szz * bz;
         }
     }
-    // The base point takes minus the sum of the others (each tetrahedron's
-    // forces sum to zero; its own gradient was never stored).
+    corner_forces(topo, &mut f, f_e);
+}
+
+/// Step 1: the displacements of a cell's decomposition points relative to
+/// its base point, `d_p = (T u)_p - u_r` (so `d[base]` is zero).
+#[inline]
+pub fn point_displacements(topo: &TetTopology, nodes: &[u32], u: &[f64]) -> [[f64; 3]; MAX_POINTS] {
+    let n = topo.n_corners;
+    let mut d = [[0.0; 3]; MAX_POINTS];
+    for (dc, &node) in d.iter_mut().zip(nodes) {
+        let k = 3 * node as usize;
+        dc.copy_from_slice(&u[k..k + 3]);
+    }
+    let u_r = if topo.has_body_point() { mean(&d[..n]) } else { d[topo.base] };
+    for dc in &mut d[..n] {
+        for i in 0..3 {
+            dc[i] -= u_r[i];
+        }
+    }
+    for (fi, face) in topo.faces.iter().enumerate() {
+        let mut s = [0.0; 3];
+        for &c in *face {
+            for i in 0..3 {
+                s[i] += d[c][i];
+            }
+        }
+        let w = 1.0 / face.len() as f64;
+        d[n + fi] = s.map(|v| w * v);
+    }
+    d
+}
+
+/// Step 3: the point forces `f` (vertices 0-2 of every tetrahedron summed;
+/// the base point's entry is overwritten) to the corners, `f_c = (T^T f)_c`,
+/// written to `f_e` (`3n` values, corner-major). The base point takes minus
+/// the sum of the others: each tetrahedron's forces sum to zero and its own
+/// gradient was never stored.
+#[inline]
+pub fn corner_forces(topo: &TetTopology, f: &mut [[f64; 3]; MAX_POINTS], f_e: &mut [f64]) {
+    let n = topo.n_corners;
     let n_points = if topo.has_body_point() { topo.base + 1 } else { n };
     let mut f_r = [0.0; 3];
     for (p, fp) in f[..n_points].iter().enumerate() {
@@ -163,8 +178,6 @@ pub fn tet_element_force(topo: &TetTopology, b: &[[f64; 9]], lame: Lame, nodes: 
         }
     }
     f[topo.base] = f_r;
-
-    // 3. Back to the corners, f_c = (T^T f)_c.
     let mut out = [[0.0; 3]; 8];
     out[..n].copy_from_slice(&f[..n]);
     for (fi, face) in topo.faces.iter().enumerate() {

@@ -16,6 +16,10 @@
 //! youngs_modulus = 3.0e8
 //! poisson_ratio = 0.3
 //! density = 2100.0
+//! strength = { cohesion = 50e3, friction_angle = 35.0, tensile = 0.0, dilation_angle = 0.0 }
+//!                                # optional: a Mohr-Coulomb rock mass that yields in the
+//!                                # failure phase: c (Pa), phi (deg), T (Pa; default: the
+//!                                # apex c / tan(phi)), psi (deg, default 0, at most phi)
 //!
 //! [joints]                       # every element interface not listed below
 //! mode = "springs"               # or "merged": shared nodes, no springs
@@ -69,7 +73,8 @@ use serde::Deserialize;
 
 use crate::error::SceneError;
 pub use crate::model::spec::{
-    Axis, Boundary, JointMode, JointSection, MaterialSection, ModelSpec, Perturbation, StrengthSection,
+    Axis, Boundary, JointMode, JointSection, MaterialSection, ModelSpec, Perturbation, RockStrengthSection,
+    StrengthSection,
 };
 use crate::solver::SolverParams;
 pub use analysis::{AnalysisSpec, SurfaceStrength};

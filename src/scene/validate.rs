@@ -40,6 +40,33 @@ fn strength(key: &str, st: &super::StrengthSection) -> Result<(), SceneError> {
     Ok(())
 }
 
+fn rock_strength(key: &str, st: &super::RockStrengthSection) -> Result<(), SceneError> {
+    let key = format!("{key}.strength");
+    for (name, v) in [("cohesion", Some(st.cohesion)), ("tensile", st.tensile)] {
+        if let Some(v) = v.filter(|v| !(v.is_finite() && *v >= 0.0)) {
+            return Err(SceneError::invalid(format!("{key}.{name}"), format!("must be finite and >= 0, got {v}")));
+        }
+    }
+    let phi = st.friction_angle;
+    if !(phi.is_finite() && (0.0..90.0).contains(&phi)) {
+        return Err(SceneError::invalid(
+            format!("{key}.friction_angle"),
+            format!("must be in [0, 90) degrees, got {phi}"),
+        ));
+    }
+    let psi = st.dilation_angle;
+    if !(psi.is_finite() && (0.0..=phi).contains(&psi)) {
+        return Err(SceneError::invalid(
+            format!("{key}.dilation_angle"),
+            format!("must be in [0, friction_angle = {phi}] degrees, got {psi}"),
+        ));
+    }
+    if st.cohesion == 0.0 && phi == 0.0 {
+        return Err(SceneError::invalid(key, "cohesion and friction_angle both 0: the material carries no shear"));
+    }
+    Ok(())
+}
+
 pub(super) fn validate(s: &Scene) -> Result<(), SceneError> {
     if let Some(e) = &s.ensemble {
         e.validate()?;
@@ -60,6 +87,9 @@ pub(super) fn validate(s: &Scene) -> Result<(), SceneError> {
                 format!("{key}.poisson_ratio"),
                 format!("must be in (-1, 0.5), got {}", m.poisson_ratio),
             ));
+        }
+        if let Some(st) = &m.strength {
+            rock_strength(&key, st)?;
         }
     }
     let j = &s.joints;

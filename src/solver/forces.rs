@@ -12,21 +12,55 @@ use rayon::prelude::*;
 use crate::model::{Model, ELEMENT_SLOT};
 use crate::physics::element::element_force;
 use crate::physics::joint::{JointLaw, JointState};
+use crate::physics::plastic::{plastic_element_force, RockState};
 use crate::physics::spring::{relative_displacement, spring_contact_force, SpringState};
 
 /// Smallest number of items a rayon task takes (keeps small models cheap).
 const MIN_LEN: usize = 256;
 
-/// Every element writes its force into its slot. Every material law today
-/// condenses ([`MaterialLaw::condenses`](crate::physics::material::MaterialLaw::condenses)):
-/// `f_e = K_e u_e`, the fast path. A law that does not condense gets its own
-/// pass over its elements' tetrahedra here.
+/// Every element writes its force into its slot by the fast path
+/// `f_e = K_e u_e` (elastic elements, and plastic ones in phase 1, whose
+/// `K_e` is their mixed stiffness).
 pub fn element_forces(model: &Model, u: &[f64], f_elem: &mut [f64]) {
     let el = &model.elements;
     f_elem.par_chunks_mut(ELEMENT_SLOT).with_min_len(MIN_LEN / 4).enumerate().for_each(|(e, f_e)| {
         let nodes = el.corners(e);
         element_force(el.stiffness(e), nodes, u, &mut f_e[..3 * nodes.len()]);
     });
+}
+
+/// Failure phase with plastic blocks: an element whose material yields
+/// integrates its tetrahedra ([`plastic_element_force`], advancing their
+/// history in `rock`); the others take the fast path.
+pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_elem: &mut [f64]) {
+    let el = &model.elements;
+    let cells = &model.plastic;
+    let RockState { surface, history, .. } = rock;
+    let surface = &*surface;
+    f_elem.par_chunks_mut(ELEMENT_SLOT).zip(history.par_iter_mut()).with_min_len(MIN_LEN / 16).enumerate().for_each(
+        |(e, (f_e, hist))| {
+            let nodes = el.corners(e);
+            let f_e = &mut f_e[..3 * nodes.len()];
+            let material = el.material[e] as usize;
+            match &surface[material] {
+                Some(mc) => {
+                    let r = el.offset[e]..el.offset[e + 1];
+                    plastic_element_force(
+                        cells.topology(el.kind[e]),
+                        cells.tets(e),
+                        &el.grad[r],
+                        model.materials[material].lame,
+                        mc,
+                        nodes,
+                        u,
+                        hist,
+                        f_e,
+                    );
+                }
+                None => element_force(el.stiffness(e), nodes, u, f_e),
+            }
+        },
+    );
 }
 
 /// Elastic springs (phase 1, or no breakable interface): eq. 15 only.

@@ -36,6 +36,7 @@ use crate::model::Model;
 use crate::model::ELEMENT_SLOT;
 use crate::physics::damping::{rayleigh_omega2, rayleigh_omega2_with};
 use crate::physics::joint::{CoulombJoint, JointState};
+use crate::physics::plastic::RockState;
 use crate::physics::spring::SpringState;
 use block_mass::BlockMass;
 use integrate::{integrate, UpdateInput};
@@ -49,6 +50,8 @@ pub struct State {
     pub springs: SpringState,
     /// What each spring can carry now (the joint law's strengths).
     pub joints: JointState,
+    /// What each plastic block can carry now and its tetrahedra's history.
+    pub rock: RockState,
     pub step: usize,
     pub time: f64,
 }
@@ -62,6 +65,7 @@ impl State {
             f_int: vec![0.0; n],
             springs: SpringState::new(model.springs.len()),
             joints: model.joint_state(),
+            rock: model.rock_state(),
             step: 0,
             time: 0.0,
         }
@@ -102,6 +106,9 @@ pub struct Solver {
     /// Failure phase on: breakable springs check eq. 17-18. Only true when
     /// the model has a breakable interface.
     failure: bool,
+    /// Failure phase on for the blocks: plastic elements integrate per
+    /// tetrahedron. Only true when the model has plastic blocks.
+    plastic: bool,
 }
 
 impl Solver {
@@ -135,6 +142,7 @@ impl Solver {
             f_spring: vec![[0.0; 3]; model.springs.len()],
             partial: vec![integrate::UpdateReport::default(); (3 * model.n_nodes()).div_ceil(integrate::CHUNK)],
             failure: false,
+            plastic: false,
         })
     }
 
@@ -178,12 +186,15 @@ impl Solver {
         &self.inertia
     }
 
-    /// Turns the failure phase (phase 2) on or off. It stays off for a model
-    /// without breakable interfaces, which then does no failure work. The
+    /// Turns the failure phase (phase 2) on or off: breakable springs follow
+    /// the joint law, plastic blocks the material law. Each stays off for a
+    /// model without breakable interfaces or plastic blocks, which then does
+    /// no failure work. The
     /// masses are kept: node-block masses stay stable when springs fail
     /// (see [`block_mass`]).
     pub fn set_failure(&mut self, model: &Model, on: bool) {
         self.failure = on && model.has_breakable_interface();
+        self.plastic = on && model.has_plastic_blocks();
     }
 
     /// Kinetic energy `v . M v / 2` with the inertial masses (J).
@@ -194,7 +205,10 @@ impl Solver {
     /// Stage 1: internal forces, eq. 12 (elements) and eq. 15 (springs),
     /// gathered per node (see [`forces`]).
     pub fn internal_forces(&mut self, model: &Model, state: &mut State) {
-        forces::element_forces(model, &state.u, &mut self.f_elem);
+        match self.plastic {
+            true => forces::element_forces_plastic(model, &mut state.rock, &state.u, &mut self.f_elem),
+            false => forces::element_forces(model, &state.u, &mut self.f_elem),
+        }
         if self.failure {
             let law = &CoulombJoint;
             forces::spring_forces_with_failure(

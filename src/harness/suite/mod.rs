@@ -9,6 +9,7 @@ pub mod block;
 pub mod ensemble;
 pub mod extreme;
 pub mod meshes;
+pub mod plastic;
 pub mod skfem;
 pub mod slope_failure;
 pub mod srm;

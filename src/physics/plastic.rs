@@ -1,0 +1,308 @@
+//! The plastic block: eq. 12 for an element whose material yields
+//! (Mohr-Coulomb, [`super::mohr_coulomb`]), integrated per tetrahedron of
+//! its decomposition with a history per tetrahedron.
+//!
+//! # The two traps, and how this element avoids them
+//!
+//! 1. **Internal points.** A cell's face and body centroids are not
+//!    independent nodes eliminated by static condensation: they are fixed
+//!    averages of the corners, `u_p = T u_c` ([`super::tet_operator`]). That
+//!    stays exact when tetrahedra yield, so the plastic element has the same
+//!    kinematics as the condensed elastic one and nothing is re-condensed.
+//! 2. **Volumetric locking.** Constant-strain tetrahedra lock under
+//!    isochoric plastic flow (Nagtegaal, Parks & Rice 1974) and overestimate
+//!    collapse loads. As FLAC's mixed discretization does over the
+//!    tetrahedra of a zone, each tetrahedron's volumetric strain is replaced
+//!    by the volume average over its cell's tetrahedra (a B-bar element):
+//!
+//!    `eps_t' = dev(eps_t) + (e / 3) I`,  `e = sum_t V_t tr(eps_t) / V`.
+//!
+//!    Its nodal forces are the virtual work of that strain,
+//!
+//!    `f_c = (T^T sum_t V_t dev(sigma_t) grad N_t)_c + (sum_t V_t p_t) g_c`,
+//!
+//!    with `p_t = tr(sigma_t) / 3` and `g_c` the cell's volume-averaged
+//!    corner gradient (the gradient of `e`). Elastic, it is the stiffness
+//!    [`mixed_stiffness`](super::element::mixed_stiffness) that phase 1 uses for the same elements, so the
+//!    elastic state is the plastic element's own. A single tetrahedron (a
+//!    `Tet4` cell) has nothing to average with and keeps its own strain.
+//!
+//! Per tetrahedron the state is the plastic strain and the yield flag:
+//! `sigma_t = D (eps_t' - eps_t^p)`, returned by the Mohr-Coulomb return
+//! mapping each step, `eps_t^p += D^-1 (sigma_trial - sigma_t)`.
+
+use super::element::tet_gradients;
+use super::elasticity::Lame;
+use super::mohr_coulomb::{compliance, MohrCoulomb, RockStrength, Yield};
+use super::tet_operator::{corner_forces, point_displacements, TetTopology};
+use crate::mesh::shape::{CellKind, Decomposition, MAX_POINTS};
+
+/// Most sub-tetrahedra of a cell (a hexahedron's 24).
+pub const MAX_TETS: usize = 24;
+
+/// The history of one tetrahedron.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct TetPlastic {
+    /// Plastic strain (Voigt xx yy zz yz xz xy, engineering shear).
+    pub eps_p: [f64; 6],
+    /// What the return mapping did at the last step.
+    pub now: Yield,
+    /// Whether it has ever yielded (in shear or tension).
+    pub ever: bool,
+}
+
+/// The history of one cell's tetrahedra (the front `n_tets` are used).
+pub type CellHistory = [TetPlastic; MAX_TETS];
+
+/// Per-tetrahedron operator of a plastic cell: `b_k = sqrt(V_t) grad N_k`
+/// of vertices 0-2 (as [`super::tet_operator`]) and `sqrt(V_t)`.
+#[derive(Debug, Clone, Copy)]
+pub struct TetB {
+    pub b: [f64; 9],
+    pub sqrt_v: f64,
+}
+
+/// The operators of a cell's tetrahedra, in [`TetTopology::tets`] order.
+pub fn plastic_operator(kind: CellKind, corners: &[[f64; 3]]) -> Vec<TetB> {
+    let dec = Decomposition::of(kind);
+    let points = dec.points(corners);
+    dec.tets
+        .iter()
+        .map(|t| {
+            let (g, v) = tet_gradients([points[t[0]], points[t[1]], points[t[2]], points[t[3]]]);
+            let s = v.sqrt();
+            let mut b = [0.0; 9];
+            for k in 0..3 {
+                for i in 0..3 {
+                    b[3 * k + i] = s * g[k][i];
+                }
+            }
+            TetB { b, sqrt_v: s }
+        })
+        .collect()
+}
+
+/// Each tetrahedron's strain (Voigt, engineering shear) from the point
+/// displacements `d`, and the cell's volume-averaged volumetric strain `e`.
+fn tet_strains(topo: &TetTopology, tets: &[TetB], d: &[[f64; 3]; MAX_POINTS]) -> ([[f64; 6]; MAX_TETS], f64) {
+    let mut eps = [[0.0; 6]; MAX_TETS];
+    let (mut ve, mut v) = (0.0, 0.0);
+    for ((t, op), e) in topo.tets.iter().zip(tets).zip(eps.iter_mut()) {
+        let mut h = [[0.0; 3]; 3]; // sqrt(V_t) du_i/dx_j
+        for (k, &p) in t.iter().enumerate() {
+            let dp = d[p as usize];
+            for i in 0..3 {
+                for j in 0..3 {
+                    h[i][j] += dp[i] * op.b[3 * k + j];
+                }
+            }
+        }
+        let w = 1.0 / op.sqrt_v;
+        *e = [h[0][0], h[1][1], h[2][2], h[1][2] + h[2][1], h[0][2] + h[2][0], h[0][1] + h[1][0]].map(|x| w * x);
+        let vt = op.sqrt_v * op.sqrt_v;
+        ve += vt * (e[0] + e[1] + e[2]);
+        v += vt;
+    }
+    (eps, ve / v)
+}
+
+/// The mixed strain `dev(eps) + (e / 3) I`.
+fn mixed(eps: [f64; 6], e: f64) -> [f64; 6] {
+    let shift = (e - (eps[0] + eps[1] + eps[2])) / 3.0;
+    [eps[0] + shift, eps[1] + shift, eps[2] + shift, eps[3], eps[4], eps[5]]
+}
+
+/// Eq. 12 for a plastic cell: writes its corner forces `f_e` (`3n` values)
+/// and advances the history `hist` of its tetrahedra by one return mapping
+/// each (see the module documentation). `grad` are the cell's
+/// volume-averaged corner gradients.
+#[allow(clippy::too_many_arguments)]
+pub fn plastic_element_force(
+    topo: &TetTopology,
+    tets: &[TetB],
+    grad: &[[f64; 3]],
+    lame: Lame,
+    surface: &MohrCoulomb,
+    nodes: &[u32],
+    u: &[f64],
+    hist: &mut [TetPlastic],
+    f_e: &mut [f64],
+) {
+    let d = point_displacements(topo, nodes, u);
+    let (eps, e) = tet_strains(topo, tets, &d);
+    let mut f = [[0.0; 3]; MAX_POINTS];
+    let mut pressure = 0.0; // sum_t V_t p_t
+    for (((t, op), eps), h) in topo.tets.iter().zip(tets).zip(&eps).zip(hist.iter_mut()) {
+        let strain = mixed(*eps, e);
+        let elastic = [0, 1, 2, 3, 4, 5].map(|i| strain[i] - h.eps_p[i]);
+        let trial = lame.stress_voigt(elastic);
+        let (sigma, now) = surface.return_map(lame, trial);
+        if now != Yield::Elastic {
+            let dep = compliance(lame, [0, 1, 2, 3, 4, 5].map(|i| trial[i] - sigma[i]));
+            for i in 0..6 {
+                h.eps_p[i] += dep[i];
+            }
+            h.ever = true;
+        }
+        h.now = now;
+        let p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
+        pressure += op.sqrt_v * op.sqrt_v * p;
+        // V_t dev(sigma) grad N_k = sqrt(V_t) dev(sigma) b_k.
+        let s = op.sqrt_v;
+        let (sxx, syy, szz) = (s * (sigma[0] - p), s * (sigma[1] - p), s * (sigma[2] - p));
+        let (syz, sxz, sxy) = (s * sigma[3], s * sigma[4], s * sigma[5]);
+        for (k, &pt) in t.iter().enumerate() {
+            let (bx, by, bz) = (op.b[3 * k], op.b[3 * k + 1], op.b[3 * k + 2]);
+            let fp = &mut f[pt as usize];
+            fp[0] += sxx * bx + sxy * by + sxz * bz;
+            fp[1] += sxy * bx + syy * by + syz * bz;
+            fp[2] += sxz * bx + syz * by + szz * bz;
+        }
+    }
+    corner_forces(topo, &mut f, f_e);
+    for (fc, g) in f_e.chunks_exact_mut(3).zip(grad) {
+        for i in 0..3 {
+            fc[i] += pressure * g[i];
+        }
+    }
+}
+
+/// What a plastic cell looks like now: its volume-averaged stress (Pa,
+/// Voigt), the volume fraction of its tetrahedra yielding now and ever, and
+/// its volume-averaged plastic shear strain `sqrt(2/3 e^p : e^p)` of the
+/// deviatoric plastic strain (FLAC's shear-strain measure).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct CellPlastic {
+    pub stress: [f64; 6],
+    pub yielding: f64,
+    pub yielded: f64,
+    pub plastic_shear: f64,
+}
+
+/// [`CellPlastic`] of one cell from its displacement and history.
+pub fn cell_plastic(
+    topo: &TetTopology,
+    tets: &[TetB],
+    lame: Lame,
+    nodes: &[u32],
+    u: &[f64],
+    hist: &[TetPlastic],
+) -> CellPlastic {
+    let d = point_displacements(topo, nodes, u);
+    let (eps, e) = tet_strains(topo, tets, &d);
+    let mut out = CellPlastic::default();
+    let mut v = 0.0;
+    for ((op, eps), h) in tets.iter().zip(&eps).zip(hist) {
+        let vt = op.sqrt_v * op.sqrt_v;
+        let strain = mixed(*eps, e);
+        let sigma = lame.stress_voigt([0, 1, 2, 3, 4, 5].map(|i| strain[i] - h.eps_p[i]));
+        for i in 0..6 {
+            out.stress[i] += vt * sigma[i];
+        }
+        if h.now != Yield::Elastic {
+            out.yielding += vt;
+        }
+        if h.ever {
+            out.yielded += vt;
+        }
+        out.plastic_shear += vt * plastic_shear(h.eps_p);
+        v += vt;
+    }
+    out.stress = out.stress.map(|s| s / v);
+    out.yielding /= v;
+    out.yielded /= v;
+    out.plastic_shear /= v;
+    out
+}
+
+/// `sqrt(2/3 e : e)` of the deviatoric part `e` of a plastic strain (Voigt,
+/// engineering shear).
+pub fn plastic_shear(eps_p: [f64; 6]) -> f64 {
+    let m = (eps_p[0] + eps_p[1] + eps_p[2]) / 3.0;
+    let d = [eps_p[0] - m, eps_p[1] - m, eps_p[2] - m];
+    let ee = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] + 0.5 * (eps_p[3].powi(2) + eps_p[4].powi(2) + eps_p[5].powi(2));
+    (2.0 / 3.0 * ee).sqrt()
+}
+
+/// What every plastic cell can carry now and its tetrahedra's history,
+/// owned by the loop beside the springs' (the counterpart of
+/// [`super::joint::JointState`]). Strength reduction rescales the
+/// strengths ([`Self::reduced`]); the model is not touched.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct RockState {
+    /// Each material's strength as given (None: linear elastic).
+    pub given: Vec<Option<RockStrength>>,
+    /// The kernel's form of `given` (reduced in a strength-reduction trial).
+    pub surface: Vec<Option<MohrCoulomb>>,
+    /// One history per element, empty if no material yields.
+    pub history: Vec<CellHistory>,
+}
+
+impl RockState {
+    /// The state of a model with these material strengths and `n_elements`
+    /// elements, every tetrahedron elastic.
+    pub fn new(given: Vec<Option<RockStrength>>, n_elements: usize) -> Self {
+        let surface = given.iter().map(|s| s.map(|s| MohrCoulomb::of(&s))).collect();
+        let any = given.iter().any(Option::is_some);
+        let history = if any { vec![[TetPlastic::default(); MAX_TETS]; n_elements] } else { Vec::new() };
+        Self { given, surface, history }
+    }
+
+    /// Strengths divided by `f` ([`RockStrength::reduced`]); the history is kept.
+    pub fn reduce(&mut self, f: f64) {
+        self.surface = self.given.iter().map(|s| s.map(|s| MohrCoulomb::of(&s.reduced(f)))).collect();
+    }
+
+    /// Whether any material yields.
+    pub fn any_plastic(&self) -> bool {
+        self.given.iter().any(Option::is_some)
+    }
+}
+
+/// The per-tetrahedron operators of a model's plastic cells, struct of
+/// arrays: element `e` has tetrahedra `tets[offset[e]..offset[e + 1]]`
+/// (none for an element whose material does not yield).
+#[derive(Debug, Clone)]
+pub struct PlasticCells {
+    pub offset: Vec<usize>,
+    pub tets: Vec<TetB>,
+    topo: [TetTopology; 3],
+}
+
+impl Default for PlasticCells {
+    fn default() -> Self {
+        Self {
+            offset: vec![0],
+            tets: Vec::new(),
+            topo: [TetTopology::of(CellKind::Tet4), TetTopology::of(CellKind::Prism6), TetTopology::of(CellKind::Hex8)],
+        }
+    }
+}
+
+impl PlasticCells {
+    /// Appends one cell: its tetrahedra if it yields, none if not.
+    pub fn push(&mut self, kind: CellKind, corners: &[[f64; 3]], plastic: bool) {
+        if plastic {
+            self.tets.extend(plastic_operator(kind, corners));
+        }
+        self.offset.push(self.tets.len());
+    }
+
+    /// The tetrahedra of element `e`.
+    pub fn tets(&self, e: usize) -> &[TetB] {
+        &self.tets[self.offset[e]..self.offset[e + 1]]
+    }
+
+    pub fn topology(&self, kind: CellKind) -> &TetTopology {
+        match kind {
+            CellKind::Tet4 => &self.topo[0],
+            CellKind::Prism6 => &self.topo[1],
+            CellKind::Hex8 => &self.topo[2],
+        }
+    }
+
+    /// Whether any cell yields.
+    pub fn any(&self) -> bool {
+        !self.tets.is_empty()
+    }
+}
