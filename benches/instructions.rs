@@ -4,6 +4,12 @@
 //!
 //! - `element_forces`: every element's `K_e u_e` (eq. 12) into its slot;
 //! - `spring_forces`: every spring's force on node `a` (eq. 15, elastic);
+//! - `plastic_forces_elastic`, `plastic_forces_yielding`: the same elements as plastic blocks (Mohr-Coulomb, the
+//!   paper's rock mass strength), every tetrahedron integrated with its
+//!   history: elastic at a displacement 1e-4 times the others' (nothing
+//!   yields: the yield test and the mixed kernel), yielding at the same
+//!   displacement as `element_forces` (most tetrahedra return to the
+//!   surface); the ratio to `element_forces` is the cost of plasticity;
 //! - `one_step`: one explicit step of the scene's solver (block masses), after
 //!   20 warm-up steps from rest;
 //! - `short_dr`: `Solver::new` and 50 steps of dynamic relaxation from rest,
@@ -24,7 +30,9 @@ use std::hint::black_box;
 use std::path::Path;
 
 use cdem::model::{Model, ELEMENT_SLOT};
+use cdem::physics::plastic::RockState;
 use cdem::physics::spring::SpringState;
+use cdem::scene::RockStrengthSection;
 use cdem::solver::{forces, Solver, SolverParams, State};
 use gungraun::{library_benchmark, library_benchmark_group, main, LibraryBenchmarkConfig};
 
@@ -68,6 +76,46 @@ fn kernel() -> Kernel {
 #[bench::paper_slope(kernel())]
 fn element_forces(mut k: Kernel) -> Kernel {
     forces::element_forces(black_box(&k.model), black_box(&k.u), &mut k.f_elem);
+    k
+}
+
+struct Plastic {
+    model: Model,
+    u: Vec<f64>,
+    rock: RockState,
+    f_elem: Vec<f64>,
+}
+
+fn plastic(scale: f64) -> Plastic {
+    one_thread();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut scene = cdem::scene::Scene::load(&root.join(cdem::harness::registry::SLOPE.input)).expect("slope scene");
+    for m in &mut scene.material {
+        m.strength = Some(RockStrengthSection {
+            cohesion: 16e3,
+            friction_angle: 18.0,
+            tensile: None,
+            dilation_angle: 0.0,
+        });
+    }
+    let model = cdem::drivers::build_model(&scene).expect("slope model");
+    let u: Vec<f64> = displacement(&model).iter().map(|v| scale * v).collect();
+    let rock = model.rock_state();
+    let f_elem = vec![0.0; ELEMENT_SLOT * model.elements.len()];
+    Plastic { model, u, rock, f_elem }
+}
+
+#[library_benchmark]
+#[bench::paper_slope(plastic(1e-4))]
+fn plastic_forces_elastic(mut k: Plastic) -> Plastic {
+    forces::element_forces_plastic(black_box(&k.model), &mut k.rock, black_box(&k.u), &mut k.f_elem);
+    k
+}
+
+#[library_benchmark]
+#[bench::paper_slope(plastic(1.0))]
+fn plastic_forces_yielding(mut k: Plastic) -> Plastic {
+    forces::element_forces_plastic(black_box(&k.model), &mut k.rock, black_box(&k.u), &mut k.f_elem);
     k
 }
 
@@ -131,7 +179,7 @@ fn lem_grid(input: cdem::lem::LemInput) -> cdem::lem::LemInput {
 
 library_benchmark_group!(
     name = kernels;
-    benchmarks = element_forces, spring_forces, one_step, short_dr, lem_grid
+    benchmarks = element_forces, plastic_forces_elastic, plastic_forces_yielding, spring_forces, one_step, short_dr, lem_grid
 );
 
 main!(

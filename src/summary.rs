@@ -120,4 +120,20 @@ pub struct Summary {
     /// The failure phase (scenes with `[failure]`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub phase2: Option<PhaseSummary>,
+    /// The plastic blocks at the end (scenes with a `[[material]] strength`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plastic: Option<PlasticSummary>,
+}
+
+/// How much of the plastic blocks yields (m^3).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PlasticSummary {
+    /// Volume of the plastic blocks.
+    pub volume: f64,
+    /// Volume of their tetrahedra on the yield surface at the last step.
+    pub yielding_volume: f64,
+    /// Volume of their tetrahedra that have yielded at some step.
+    pub yielded_volume: f64,
+    /// Largest element plastic shear strain (FLAC's measure).
+    pub max_plastic_shear: f64,
 }

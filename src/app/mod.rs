@@ -38,12 +38,13 @@ pub fn run(scene_path: &Path, out: &Path, progress: &mut dyn FnMut(RunProgress))
 }
 
 /// `cdem srm SCENE --out DIR`: strength reduction; writes `srm.json`,
-/// `mechanism.vtu` and `mechanism.png`.
+/// `mechanism.vtu`, `mechanism.png` and, with plastic blocks, `slip-band.png`.
 pub fn srm(scene_path: &Path, out: &Path, progress: &mut dyn FnMut(SrmProgress)) -> crate::Result<SrmResult> {
     let scene = Scene::load(scene_path)?;
     let (result, model) = crate::drivers::run_srm(&scene, progress)?;
     crate::output::write_srm(&result, &model, out)?;
     figures::mechanism::mechanism_png(&result, &model, &out.join("mechanism.png"))?;
+    figures::mechanism::slip_band_png(&result, &model, &out.join("slip-band.png"))?;
     Ok(result)
 }
 

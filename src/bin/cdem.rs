@@ -30,8 +30,17 @@ enum Command {
         #[arg(long, default_value = "out")]
         out: PathBuf,
     },
-    /// Factor of safety by strength reduction (c/F, tan(phi)/F, T/F on the breakable interfaces,
-    /// bracketing then bisection to a width of 0.01): DIR/srm.json, mechanism.vtu, mechanism.png.
+    /// Factor of safety by strength reduction (c/F, tan(phi)/F, T/F on the breakable interfaces
+    /// and the plastic blocks, bracketing then bisection to a width of 0.01): DIR/srm.json,
+    /// mechanism.vtu, mechanism.png, slip-band.png.
+    ///
+    /// Which model answers which question: plastic blocks (a [[material]] strength) find the
+    /// failure through the rock mass and along the breakable interfaces: a slope whose slip
+    /// surface nobody drew. Elastic blocks with breakable interfaces (a drawn slip surface, real
+    /// joints) fail only along those interfaces. Elastic blocks with every element interface
+    /// breakable interlock: that FS is biased high (+28 % to +42 % on homogeneous slopes,
+    /// references/srm.md), and srm says so.
+    #[command(verbatim_doc_comment)]
     Srm {
         scene: PathBuf,
         #[arg(long, default_value = "out-srm")]
@@ -431,12 +440,15 @@ fn srm(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
         }
         SrmProgress::TrialEnd(t) => pb.suspend(|| {
             eprintln!(
-                "F = {:.4}: {:?} after {} steps, max displacement {:.3e} m, {} failed springs",
-                t.factor, t.outcome, t.steps, t.max_displacement, t.failed_springs
+                "F = {:.4}: {:?} after {} steps, max displacement {:.3e} m, {} failed springs, {:.3e} m^3 yielded",
+                t.factor, t.outcome, t.steps, t.max_displacement, t.failed_springs, t.yielded_volume
             )
         }),
     })?;
     pb.finish_and_clear();
+    if let Some(note) = &result.model.note {
+        println!("note: {note}");
+    }
     let [lo, hi] = result.bracket;
     let show = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.4}"));
     match result.fs {

@@ -115,8 +115,9 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
 
     let stress = scene.output.stress.then(|| match (&failure, elastic_stress) {
         (None, Some(elastic)) => elastic,
-        _ => model.element_stresses(&state.u),
+        _ => model.element_stresses_in(&state.rock, &state.u),
     });
+    let plastic = model.plastic_cells(&state.rock, &state.u).map(|cells| model.plastic_summary(&cells));
     let field = FieldExtremes::of(&state.u, stress.as_deref());
     let last = phase2.as_ref().unwrap_or(&phase1);
     let summary = Summary {
@@ -136,6 +137,7 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         springs: model.springs.len(),
         phase1: Some(phase1),
         phase2,
+        plastic,
     };
     Ok(RunResult { model, state, elastic, failure, stress, surface, frames, summary })
 }

@@ -29,6 +29,7 @@ use super::run::run_watched;
 use crate::error::{Error, SceneError};
 use crate::model::Model;
 use crate::physics::joint::JointState;
+use crate::physics::plastic::CellPlastic;
 use crate::scene::{FailureParams, Scene};
 use crate::solver::{PhasePlan, State, StepView};
 use crate::summary::{max_displacement, EndState};
@@ -51,6 +52,9 @@ pub struct Trial {
     pub max_displacement: f64,
     /// Springs that failed (either kind).
     pub failed_springs: usize,
+    /// Volume of the plastic blocks' tetrahedra that yielded in the trial
+    /// (m^3; 0 without plastic blocks).
+    pub yielded_volume: f64,
     /// The trial's own setup before its first step: the elastic state
     /// copied, its strengths reduced, the plan restarted (s).
     pub setup_s: f64,
@@ -90,10 +94,68 @@ pub struct SrmResult {
     /// shared.
     pub plan_setup_s: f64,
     pub wall_s: f64,
+    /// What was divided by `F`: one line per material and interface.
+    pub reduced: Vec<String>,
+    /// Which model answered (see [`Answer`]).
+    pub model: Answer,
     /// The displacement since the elastic state at the final `hi` (the
     /// mechanism), 3 per node.
     #[serde(skip)]
     pub mechanism: Option<Vec<f64>>,
+    /// The plastic blocks at the final `hi` (the slip band), per element.
+    #[serde(skip)]
+    pub mechanism_cells: Option<Vec<CellPlastic>>,
+}
+
+/// Which model a factor of safety comes from, and what it answers.
+#[derive(Debug, Clone, Serialize)]
+pub struct Answer {
+    /// `"plastic blocks"` (a Mohr-Coulomb rock mass, the failure finds its
+    /// own way through the blocks and along the breakable interfaces),
+    /// `"interfaces only"` (elastic blocks; failure only along breakable
+    /// interfaces), or `"every interface, elastic blocks"` (elastic blocks
+    /// that may part along any face: the interlocking bias applies).
+    pub kind: &'static str,
+    /// A warning the result carries, if any.
+    pub note: Option<String>,
+}
+
+/// The interlocking bias of elastic blocks that part only along their faces
+/// when every element interface is breakable at the rock mass strength,
+/// measured against published FE strength reduction and our LEM on
+/// homogeneous slopes (references/srm.md, "interfaces only").
+pub const INTERLOCKING_NOTE: &str = "every element interface is breakable while the blocks are elastic: the factor of \
+     safety carries the interlocking bias of blocks that can part only along their faces, measured at +28 % to +42 % \
+     (unconservative) and mesh-dependent on homogeneous slopes (references/srm.md); for a rock mass whose failure must \
+     find its own way, give the blocks a [[material]] strength";
+
+impl Answer {
+    /// The answer of `model`'s strength reduction.
+    pub fn of(model: &Model) -> Self {
+        let every = !model.springs.is_empty() && model.joint_state().strength.iter().all(Option::is_some);
+        match (model.has_plastic_blocks(), every) {
+            (true, _) => Answer { kind: "plastic blocks", note: None },
+            (false, true) => Answer { kind: "every interface, elastic blocks", note: Some(INTERLOCKING_NOTE.into()) },
+            (false, false) => Answer { kind: "interfaces only", note: None },
+        }
+    }
+}
+
+/// What a strength reduction of `model` divides by `F`.
+pub fn reduced_strengths(model: &Model) -> Vec<String> {
+    let mut out = Vec::new();
+    for (i, m) in model.materials.iter().enumerate() {
+        if m.law.strength().is_some() {
+            out.push(format!("material[{i}]: c, tan(phi), T; psi capped at the reduced phi"));
+        }
+    }
+    for (i, f) in model.interfaces.iter().enumerate() {
+        if f.props.strength.is_some() {
+            let name = if i == 0 { "joints".to_string() } else { format!("interface {}", f.name) };
+            out.push(format!("{name}: T, c, tan(phi)"));
+        }
+    }
+    out
 }
 
 /// What the caller sees of a strength reduction as it goes.
@@ -164,8 +226,13 @@ impl Reduction {
     }
 
     /// Phase 2 with every breakable strength divided by `factor`; returns the
-    /// trial and the displacement since the elastic state.
-    pub fn trial(&mut self, factor: f64, watch: &mut dyn Watch) -> Result<(Trial, Vec<f64>), Error> {
+    /// trial, the displacement since the elastic state and the plastic
+    /// blocks (if any).
+    pub fn trial(
+        &mut self,
+        factor: f64,
+        watch: &mut dyn Watch,
+    ) -> Result<(Trial, Vec<f64>, Option<Vec<CellPlastic>>), Error> {
         let t = std::time::Instant::now();
         let mut state = self.elastic.clone();
         state.joints = self.strengths.reduced(factor);
@@ -174,16 +241,19 @@ impl Reduction {
         let setup_s = t.elapsed().as_secs_f64();
         let r = failure::run(&mut self.plan, &self.model, &mut state, &self.params, false, watch)?;
         let since: Vec<f64> = state.u.iter().zip(&r.u_elastic).map(|(a, b)| a - b).collect();
+        let cells = self.model.plastic_cells(&state.rock, &state.u);
+        let yielded_volume = cells.as_deref().map_or(0.0, |c| self.model.plastic_summary(c).yielded_volume);
         let trial = Trial {
             factor,
             outcome: r.end,
             steps: r.report.steps,
             max_displacement: max_displacement(&since),
             failed_springs: failed_springs(&state.springs.status).total(),
+            yielded_volume,
             setup_s,
             wall_s: t.elapsed().as_secs_f64(),
         };
-        Ok((trial, since))
+        Ok((trial, since, cells))
     }
 
     /// The step budget of one trial.
@@ -201,14 +271,14 @@ pub fn run_srm(scene: &Scene, progress: &mut dyn FnMut(SrmProgress)) -> Result<(
     let mut trials = Vec::new();
     let (mut lo, mut hi) = (None::<f64>, None::<f64>);
     let mut mechanism = None;
-    let mut run =
-        |f: f64, trials: &mut Vec<Trial>, progress: &mut dyn FnMut(SrmProgress)| -> Result<(bool, Vec<f64>), Error> {
-            progress(SrmProgress::TrialStart(f));
-            let (t, since) = red.trial(f, &mut Forward(progress))?;
-            progress(SrmProgress::TrialEnd(&t));
-            trials.push(t);
-            Ok((t.stable(), since))
-        };
+    type Outcome = (bool, (Vec<f64>, Option<Vec<CellPlastic>>));
+    let mut run = |f: f64, trials: &mut Vec<Trial>, progress: &mut dyn FnMut(SrmProgress)| -> Result<Outcome, Error> {
+        progress(SrmProgress::TrialStart(f));
+        let (t, since, cells) = red.trial(f, &mut Forward(progress))?;
+        progress(SrmProgress::TrialEnd(&t));
+        trials.push(t);
+        Ok((t.stable(), (since, cells)))
+    };
     // Bracketing.
     let mut f = 1.0;
     loop {
@@ -248,6 +318,7 @@ pub fn run_srm(scene: &Scene, progress: &mut dyn FnMut(SrmProgress)) -> Result<(
             mechanism = Some(since);
         }
     }
+    let (mechanism, mechanism_cells) = mechanism.map_or((None, None), |(u, c)| (Some(u), c));
     let fs = lo.zip(hi).map(|(l, h)| 0.5 * (l + h));
     let hi_outcome = hi.and_then(|h| trials.iter().find(|t| t.factor == h)).map(|t| t.outcome);
     let sliding = trials.iter().filter(|t| t.outcome == EndState::GlobalSliding);
@@ -264,7 +335,10 @@ pub fn run_srm(scene: &Scene, progress: &mut dyn FnMut(SrmProgress)) -> Result<(
         trial_budget,
         plan_setup_s: red.plan_setup_s,
         wall_s: t0.elapsed().as_secs_f64(),
+        reduced: reduced_strengths(&red.model),
+        model: Answer::of(&red.model),
         mechanism,
+        mechanism_cells,
     };
     Ok((result, red.model))
 }

@@ -104,6 +104,7 @@ pub fn solve(p: &FemProblem) -> crate::Result<FemSolution> {
         springs: 0,
         phase1: None,
         phase2: None,
+        plastic: None,
     };
     Ok(FemSolution {
         coords: p.coords.clone(),

@@ -18,7 +18,8 @@ use crate::mesh::CellKind;
 use crate::physics::element::element_stress;
 use crate::physics::joint::{JointProps, JointState};
 use crate::physics::material::Material;
-use crate::physics::plastic::{PlasticCells, RockState};
+use crate::physics::plastic::{cell_plastic, CellPlastic, PlasticCells, RockState};
+use crate::summary::PlasticSummary;
 use crate::physics::spring::Springs;
 use crate::physics::tet_operator::TetOperators;
 
@@ -179,7 +180,63 @@ impl Model {
         self.interfaces.iter().any(|i| i.props.strength.is_some())
     }
 
-    /// Stress of every element (Pa, Voigt xx yy zz yz xz xy) for displacements `u`.
+    /// What each element's plastic tetrahedra look like now (None without
+    /// plastic blocks; an elastic element has yielded nothing and its
+    /// condensed stress).
+    pub fn plastic_cells(&self, rock: &RockState, u: &[f64]) -> Option<Vec<CellPlastic>> {
+        if !self.has_plastic_blocks() || rock.history.len() != self.elements.len() {
+            return None;
+        }
+        let el = &self.elements;
+        let stress = self.element_stresses(u);
+        Some(
+            (0..el.len())
+                .map(|e| {
+                    let material = el.material[e] as usize;
+                    match rock.given[material] {
+                        Some(_) => cell_plastic(
+                            self.plastic.topology(el.kind[e]),
+                            self.plastic.tets(e),
+                            self.materials[material].lame,
+                            el.corners(e),
+                            u,
+                            &rock.history[e],
+                        ),
+                        None => CellPlastic { stress: stress[e], ..CellPlastic::default() },
+                    }
+                })
+                .collect(),
+        )
+    }
+
+    /// The summary of [`Self::plastic_cells`].
+    pub fn plastic_summary(&self, cells: &[CellPlastic]) -> PlasticSummary {
+        let el = &self.elements;
+        let mut out = PlasticSummary { volume: 0.0, yielding_volume: 0.0, yielded_volume: 0.0, max_plastic_shear: 0.0 };
+        for (e, c) in cells.iter().enumerate() {
+            if self.materials[el.material[e] as usize].law.strength().is_some() {
+                let v = el.volume[e];
+                out.volume += v;
+                out.yielding_volume += c.yielding * v;
+                out.yielded_volume += c.yielded * v;
+                out.max_plastic_shear = out.max_plastic_shear.max(c.plastic_shear);
+            }
+        }
+        out
+    }
+
+    /// Stress of every element (Pa, Voigt xx yy zz yz xz xy) for
+    /// displacements `u` and the rock state `rock` (a plastic element's is
+    /// the volume average of its tetrahedra's).
+    pub fn element_stresses_in(&self, rock: &RockState, u: &[f64]) -> Vec<[f64; 6]> {
+        match self.plastic_cells(rock, u) {
+            Some(cells) => cells.iter().map(|c| c.stress).collect(),
+            None => self.element_stresses(u),
+        }
+    }
+
+    /// Stress of every element (Pa, Voigt xx yy zz yz xz xy) for displacements
+    /// `u`, every element elastic (phase 1).
     pub fn element_stresses(&self, u: &[f64]) -> Vec<[f64; 6]> {
         let el = &self.elements;
         (0..el.len())

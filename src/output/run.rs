@@ -65,10 +65,12 @@ fn write_all(scene: &Scene, result: &RunResult, dir: &Path) -> Result<Vec<String
         let mut pvd = Vec::new();
         for f in &result.frames {
             let name = format!("step-{:08}.vtu", f.step);
-            vtk::write_vtu(&dir.join(&name), &result.model, &vtk::Frame { u: &f.u, stress: None })?;
+            vtk::write_vtu(&dir.join(&name), &result.model, &vtk::Frame { u: &f.u, stress: None, cells: &[] })?;
             pvd.push((f.time, name));
         }
-        let frame = vtk::Frame { u: &result.state.u, stress: result.stress.as_deref() };
+        let plastic = result.model.plastic_cells(&result.state.rock, &result.state.u);
+        let fields = plastic.as_deref().map(vtk::plastic_fields).unwrap_or_default();
+        let frame = vtk::Frame { u: &result.state.u, stress: result.stress.as_deref(), cells: &fields };
         vtk::write_vtu(&dir.join("final.vtu"), &result.model, &frame)?;
         pvd.push((result.state.time, "final.vtu".to_string()));
         vtk::write_pvd(&dir.join("run.pvd"), &pvd)?;
@@ -100,7 +102,7 @@ fn write_failure(result: &RunResult, f: &FailureResult, dir: &Path, vtk: bool) -
         let mut pvd = Vec::new();
         for frame in &f.frames {
             let name = format!("stage-{:08}.vtu", frame.step);
-            vtk::write_vtu(&dir.join(&name), &result.model, &vtk::Frame { u: &frame.u, stress: None })?;
+            vtk::write_vtu(&dir.join(&name), &result.model, &vtk::Frame { u: &frame.u, stress: None, cells: &[] })?;
             pvd.push((frame.step as f64, name));
         }
         vtk::write_pvd(&dir.join("failure.pvd"), &pvd)?;

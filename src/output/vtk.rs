@@ -23,26 +23,42 @@ pub struct Frame<'a> {
     pub u: &'a [f64],
     /// Element stresses (Voigt xx yy zz yz xz xy), if computed.
     pub stress: Option<&'a [[f64; 6]]>,
+    /// Further cell fields, one value per element (e.g. the plastic blocks'
+    /// [`plastic_fields`]).
+    pub cells: &'a [(&'static str, Vec<f64>)],
+}
+
+/// The cell fields of plastic blocks: `plastic_shear` (the volume-averaged
+/// plastic shear strain, FLAC's shear-strain measure), `yielding` and
+/// `yielded` (the volume fraction of each element's tetrahedra yielding now
+/// and ever).
+pub fn plastic_fields(cells: &[crate::physics::plastic::CellPlastic]) -> Vec<(&'static str, Vec<f64>)> {
+    vec![
+        ("plastic_shear", cells.iter().map(|c| c.plastic_shear).collect()),
+        ("yielding", cells.iter().map(|c| c.yielding).collect()),
+        ("yielded", cells.iter().map(|c| c.yielded).collect()),
+    ]
 }
 
 /// The `.vtu` text of a model's frame: points the node copies, cells the elements.
 pub fn vtu_string(model: &Model, frame: &Frame) -> String {
     let el = &model.elements;
     let cells: Vec<(CellKind, &[u32])> = (0..el.len()).map(|e| (el.kind[e], el.corners(e))).collect();
-    grid_vtu(&model.x0, &cells, frame.u, &el.material, frame.stress)
+    grid_vtu(&model.x0, &cells, frame.u, &el.material, frame.stress, frame.cells)
 }
 
 /// The `.vtu` text (ASCII VTK XML unstructured grid) of `points`, `cells`
 /// (kind and point ids, written as in the module doc) and the fields: the
 /// point field `displacement` (m, 3 per point) and the cell fields `material`
-/// and, if given, `sxx syy szz syz sxz sxy` (Pa). `cdem run` and `cdem fem`
-/// both write through it.
+/// and, if given, `sxx syy szz syz sxz sxy` (Pa) and `fields`. `cdem run`
+/// and `cdem fem` both write through it.
 pub fn grid_vtu<C: AsRef<[u32]>>(
     points: &[[f64; 3]],
     cells: &[(CellKind, C)],
     u: &[f64],
     material: &[u16],
     stress: Option<&[[f64; 6]]>,
+    fields: &[(&'static str, Vec<f64>)],
 ) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>");
@@ -101,6 +117,13 @@ pub fn grid_vtu<C: AsRef<[u32]>>(
             }
             s.push_str("\n</DataArray>\n");
         }
+    }
+    for (name, values) in fields {
+        let _ = writeln!(s, "<DataArray type=\"Float64\" Name=\"{name}\" format=\"ascii\">");
+        for v in values {
+            let _ = write!(s, "{v:e} ");
+        }
+        s.push_str("\n</DataArray>\n");
     }
     s.push_str("</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
     s

@@ -27,3 +27,15 @@ pub fn mechanism_png(result: &SrmResult, model: &Model, path: &Path) -> Result<b
     section_contour(path, &title, "|u - u_elastic| (m)", &patches, &[])?;
     Ok(true)
 }
+
+/// Writes `path` (PNG): the plastic shear strain (FLAC's measure, the
+/// volume average over each element's tetrahedra) at the smallest unstable
+/// factor, which marks the slip band through plastic blocks; returns
+/// whether there was one to draw.
+pub fn slip_band_png(result: &SrmResult, model: &Model, path: &Path) -> Result<bool, Error> {
+    let (Some(cells), Some(hi)) = (&result.mechanism_cells, result.bracket[1]) else { return Ok(false) };
+    let patches = front_patches(model, |e| cells[e].plastic_shear);
+    let title = format!("slip band: plastic shear strain at F = {hi:.3}");
+    section_contour(path, &title, "plastic shear strain (-)", &patches, &[])?;
+    Ok(true)
+}
