@@ -1,7 +1,7 @@
 //! The committed meshes against what gmsh makes of their `.geo` (row
 //! `meshes/regenerated`, as tests/gmsh_regen.rs checks it): every `.geo`
-//! under verification/extreme, verification/study, verification/tutorial and
-//! verification/cases/*
+//! under verification/extreme, verification/study, verification/tutorial,
+//! verification/cases/* and verification/plastic/*
 //! is regenerated into a temporary directory and compared with the `.msh`
 //! beside it (connectivity, tags and groups exactly, node coordinates within
 //! 1e-9 of the model size). Without gmsh the row is skipped, with the reason.
@@ -19,7 +19,9 @@ pub const NO_GMSH: &str = "gmsh is not on PATH (it must be in CI)";
 pub fn geos(root: &Path) -> Vec<PathBuf> {
     let v = root.join("verification");
     let mut dirs = vec![v.join("extreme"), v.join("study"), v.join("tutorial")];
-    dirs.extend(std::fs::read_dir(v.join("cases")).into_iter().flatten().flatten().map(|e| e.path()));
+    for parent in ["cases", "plastic"] {
+        dirs.extend(std::fs::read_dir(v.join(parent)).into_iter().flatten().flatten().map(|e| e.path()));
+    }
     let mut geos: Vec<PathBuf> = dirs
         .iter()
         .flat_map(|d| std::fs::read_dir(d).into_iter().flatten().flatten().map(|f| f.path()))

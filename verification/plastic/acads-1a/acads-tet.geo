@@ -1,0 +1,5 @@
+// ACADS (1989) problem 1(a) (section.geo; references/plastic.md) as a
+// one-element-thick plane-strain slab of tetrahedra (a 3D mesh of the slab).
+shape = 2;
+Include "section.geo";
+Include "../slab.geo";

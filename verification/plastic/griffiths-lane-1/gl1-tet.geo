@@ -1,0 +1,5 @@
+// Griffiths & Lane (1999) Example 1 (section.geo; references/plastic.md) as a
+// one-element-thick plane-strain slab of tetrahedra (a 3D mesh of the slab).
+shape = 2;
+Include "section.geo";
+Include "../slab.geo";
