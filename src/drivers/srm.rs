@@ -212,8 +212,8 @@ impl Reduction {
         if !run.model.has_breakable_interface() && !run.model.has_plastic_blocks() {
             return Err(SceneError::invalid(
                 "interface",
-                "strength reduction needs a strength to reduce: a `strength` on [joints], an [[interface]] \
-                 or a [[material]]",
+                "strength reduction needs a breakable interface or plastic blocks: a `strength` on [joints], \
+                 an [[interface]] or a [[material]]",
             )
             .into());
         }

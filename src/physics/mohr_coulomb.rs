@@ -26,7 +26,9 @@
 //! Box 8.5 with the tension planes added. The principal directions are
 //! kept (isotropy), and the stress is rebuilt from them.
 
-use nalgebra::{Matrix3, SymmetricEigen};
+use nalgebra::Matrix3;
+#[cfg(test)]
+use nalgebra::SymmetricEigen;
 
 use super::elasticity::Lame;
 
@@ -150,54 +152,61 @@ impl MohrCoulomb {
         if self.violation(values) <= tol {
             return (trial, Yield::Elastic);
         }
-        let (s, axes) = principal(&trial);
         let d = principal_elasticity(lame);
+        let planes = [0, 1, 2, 3, 4, 5].map(|p| {
+            let (m, k, n) = self.plane(p);
+            Plane { m, k, dn: mat_vec(&d, n), excess: dot3(m, values) - k }
+        });
         for set in ACTIVE_SETS {
-            if let Some((r, tension)) = self.return_to(set, s, &d, tol) {
+            if let Some((r, tension)) = return_to(&planes, set, values, tol) {
                 let kind = if tension { Yield::Tension } else { Yield::Shear };
-                return (from_principal(r, &axes), kind);
+                return (spectral_update(&trial, values, r), kind);
             }
         }
         // No set of at most three planes returns the stress: a degenerate
         // surface (c = 0 and phi = 0). The stress-free state is on it.
         ([0.0; 6], Yield::Shear)
     }
+}
 
-    /// The return of `s` onto the planes `set`, if its multipliers are
-    /// non-negative and the result is admissible; `true` if a tension plane
-    /// is active.
-    fn return_to(&self, set: &[usize], s: [f64; 3], d: &Matrix3<f64>, tol: f64) -> Option<([f64; 3], bool)> {
-        let n = set.len();
-        let mut planes = [([0.0; 3], 0.0, [0.0; 3]); 3];
-        let mut dn = [[0.0; 3]; 3];
-        for (j, &p) in set.iter().enumerate() {
-            planes[j] = self.plane(p);
-            dn[j] = mat_vec(d, planes[j].2);
+/// One plane of the surface for one return: `m . s <= k`, its flow
+/// direction through the elasticity `D n`, and the trial's excess `m . s* - k`.
+#[derive(Clone, Copy)]
+struct Plane {
+    m: [f64; 3],
+    k: f64,
+    dn: [f64; 3],
+    excess: f64,
+}
+
+/// The return of `s` onto the planes `set`, if its multipliers are
+/// non-negative and the result is admissible; `true` if a tension plane is
+/// active.
+fn return_to(planes: &[Plane; PLANES], set: &[usize], s: [f64; 3], tol: f64) -> Option<([f64; 3], bool)> {
+    let n = set.len();
+    let mut a = [[0.0; 3]; 3];
+    let mut rhs = [0.0; 3];
+    for (i, &p) in set.iter().enumerate() {
+        rhs[i] = planes[p].excess;
+        for (j, &q) in set.iter().enumerate() {
+            a[i][j] = dot3(planes[p].m, planes[q].dn);
         }
-        let mut a = [[0.0; 3]; 3];
-        let mut rhs = [0.0; 3];
-        for (i, (m, k, _)) in planes[..n].iter().enumerate() {
-            rhs[i] = dot3(*m, s) - k;
-            for j in 0..n {
-                a[i][j] = dot3(*m, dn[j]);
-            }
-        }
-        let dg = solve(&a, &rhs, n)?;
-        let largest = dg[..n].iter().fold(0.0, |m: f64, v| m.max(v.abs()));
-        if dg[..n].iter().any(|&g| g < -1e-12 * largest) {
-            return None;
-        }
-        let mut r = s;
-        for (g, dnj) in dg[..n].iter().zip(&dn) {
-            for i in 0..3 {
-                r[i] -= g * dnj[i];
-            }
-        }
-        if (0..PLANES).any(|p| !set.contains(&p) && self.excess(p, r) > tol) {
-            return None;
-        }
-        Some((r, set.iter().any(|&p| p >= 3)))
     }
+    let dg = solve(&a, &rhs, n)?;
+    let largest = dg[..n].iter().fold(0.0, |m: f64, v| m.max(v.abs()));
+    if dg[..n].iter().any(|&g| g < -1e-12 * largest) {
+        return None;
+    }
+    let mut r = s;
+    for (g, &q) in dg[..n].iter().zip(set) {
+        for i in 0..3 {
+            r[i] -= g * planes[q].dn[i];
+        }
+    }
+    if (0..PLANES).any(|p| !set.contains(&p) && dot3(planes[p].m, r) - planes[p].k > tol) {
+        return None;
+    }
+    Some((r, set.iter().any(|&p| p >= 3)))
 }
 
 /// The candidate active sets in the order they are tried: one plane, two,
@@ -248,7 +257,62 @@ fn principal_values(sigma: &[f64; 6]) -> [f64; 3] {
     [s1, 3.0 * q - s1 - s3, s3]
 }
 
-/// Principal stresses ordered `s1 >= s2 >= s3` and their directions (columns).
+/// The stress whose principal values are `new` on the principal directions
+/// of `sigma` (principal values `old`), without the directions themselves:
+/// `sigma + sum_i (new_i - old_i) P_i` with the spectral projectors from
+/// Sylvester's formula, `P_1 = (A - s_2 I)(A - s_3 I) / ((s_1 - s_2)(s_1 - s_3))`
+/// and the like, `P_2 = I - P_1 - P_3`. Where two principal values coincide
+/// (within 1e-6 of the spread) only their pair's projector is defined, and
+/// the pair takes its mean change (the return keeps a pair equal).
+fn spectral_update(sigma: &[f64; 6], old: [f64; 3], new: [f64; 3]) -> [f64; 6] {
+    let d = [new[0] - old[0], new[1] - old[1], new[2] - old[2]];
+    let spread = old[0] - old[2];
+    let scale = old[0].abs().max(old[2].abs()).max(f64::MIN_POSITIVE);
+    let mut out = *sigma;
+    let mut add = |w: f64, m: [f64; 6]| {
+        for i in 0..6 {
+            out[i] += w * m[i];
+        }
+    };
+    const I: [f64; 6] = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0];
+    if spread <= 1e-12 * scale {
+        add((d[0] + d[1] + d[2]) / 3.0, I);
+        return out;
+    }
+    // A^2 of the symmetric sigma (Voigt xx yy zz yz xz xy).
+    let [xx, yy, zz, yz, xz, xy] = *sigma;
+    let a2 = [
+        xx * xx + xy * xy + xz * xz,
+        xy * xy + yy * yy + yz * yz,
+        xz * xz + yz * yz + zz * zz,
+        xy * xz + yy * yz + yz * zz,
+        xx * xz + xy * yz + xz * zz,
+        xx * xy + xy * yy + xz * yz,
+    ];
+    // (A - a I)(A - b I) / w.
+    let quad = |a: f64, b: f64, w: f64| [0, 1, 2, 3, 4, 5].map(|i| (a2[i] - (a + b) * sigma[i] + a * b * I[i]) / w);
+    let lin = |a: f64, w: f64| [0, 1, 2, 3, 4, 5].map(|i| (sigma[i] - a * I[i]) / w);
+    let (g12, g23) = (old[0] - old[1], old[1] - old[2]);
+    if g12 <= 1e-6 * spread {
+        // P_12 = (A - s_3 I) / (s_1 - s_3), P_3 = I - P_12.
+        add(d[2], I);
+        add(0.5 * (d[0] + d[1]) - d[2], lin(old[2], spread));
+    } else if g23 <= 1e-6 * spread {
+        // P_1 = (A - s_3 I) / (s_1 - s_3), P_23 = I - P_1.
+        add(0.5 * (d[1] + d[2]), I);
+        add(d[0] - 0.5 * (d[1] + d[2]), lin(old[2], spread));
+    } else {
+        add(d[1], I);
+        add(d[0] - d[1], quad(old[1], old[2], g12 * spread));
+        add(d[2] - d[1], quad(old[0], old[1], spread * g23));
+    }
+    out
+}
+
+/// Principal stresses ordered `s1 >= s2 >= s3` and their directions
+/// (columns), by nalgebra's eigensolver: the tests' independent check of
+/// [`principal_values`] and [`spectral_update`].
+#[cfg(test)]
 fn principal(sigma: &[f64; 6]) -> ([f64; 3], Matrix3<f64>) {
     let m = Matrix3::new(
         sigma[0], sigma[5], sigma[4], //
@@ -264,6 +328,7 @@ fn principal(sigma: &[f64; 6]) -> ([f64; 3], Matrix3<f64>) {
 }
 
 /// `sigma = sum_i s_i a_i a_i^T` in Voigt order.
+#[cfg(test)]
 fn from_principal(s: [f64; 3], axes: &Matrix3<f64>) -> [f64; 6] {
     let mut out = [0.0; 6];
     const IJ: [(usize, usize); 6] = [(0, 0), (1, 1), (2, 2), (1, 2), (0, 2), (0, 1)];
@@ -347,6 +412,31 @@ mod tests {
             let b = principal(&s).0;
             for i in 0..3 {
                 assert!((a[i] - b[i]).abs() <= 1e-9 * (1.0 + b[i].abs()), "{a:?} vs {b:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_spectral_update_is_the_rotation_of_the_new_principal_values() {
+        let mut seed = 7u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+        };
+        for k in 0..500 {
+            let mut s = [0; 6].map(|_| next());
+            if k % 5 == 0 {
+                // A repeated principal value: s1 = s2.
+                let (v, axes) = principal(&s);
+                s = from_principal([v[0], v[0], v[2]], &axes);
+            }
+            let (old, axes) = principal(&s);
+            let new = [old[0] - 0.3, old[1] + 0.1, old[2] + 0.2];
+            let new = if k % 5 == 0 { [new[0], new[0], new[2]] } else { new };
+            let want = from_principal(new, &axes);
+            let got = spectral_update(&s, principal_values(&s), new);
+            for i in 0..6 {
+                assert!((got[i] - want[i]).abs() < 1e-8, "{k}: {got:?} vs {want:?}");
             }
         }
     }

@@ -15,8 +15,8 @@
 use std::path::Path;
 
 /// The committed meshes and their sources, which `meshes/regenerated`
-/// compares: every case folder under this one, and [`MESH_DIRS`].
-const CASE_DIRS: &str = "verification/cases";
+/// compares: these and every case folder under them, and [`MESH_DIRS`].
+const CASE_DIRS: [&str; 2] = ["verification/cases", "verification/plastic"];
 const MESH_DIRS: [&str; 3] = ["verification/extreme", "verification/study", "verification/tutorial"];
 
 /// Row-id prefix, and the files (relative to the repository root) its rows
@@ -92,9 +92,14 @@ pub fn declared(id: &str, source: &str, root: &Path) -> Option<Vec<String>> {
 /// Every `.geo` and `.msh` in the directories under [`CASE_DIRS`].
 fn case_meshes(root: &Path) -> Vec<String> {
     let mut dirs: Vec<String> = MESH_DIRS.iter().map(|d| d.to_string()).collect();
-    for dir in std::fs::read_dir(root.join(CASE_DIRS)).into_iter().flatten().flatten() {
-        if let Some(d) = dir.file_name().to_str() {
-            dirs.push(format!("{CASE_DIRS}/{d}"));
+    for cases in CASE_DIRS {
+        dirs.push(cases.to_string());
+        for dir in std::fs::read_dir(root.join(cases)).into_iter().flatten().flatten() {
+            if dir.path().is_dir() {
+                if let Some(d) = dir.file_name().to_str() {
+                    dirs.push(format!("{cases}/{d}"));
+                }
+            }
         }
     }
     let mut out = Vec::new();
