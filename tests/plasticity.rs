@@ -12,3 +12,41 @@ fn one_plastic_hexahedron_carries_the_mohr_coulomb_limit_in_plane_strain_compres
         assert!(r.error() < 1e-6, "{r:?}");
     }
 }
+
+/// Elastic, the plastic element's forces (deviatoric per tetrahedron plus
+/// the cell-averaged pressure) are its mixed stiffness times the
+/// displacement: the kernel and the phase-1 `K_e` of a plastic block agree.
+#[test]
+fn the_elastic_plastic_element_is_its_mixed_stiffness() {
+    use cdem::mesh::shape::CellKind;
+    use cdem::physics::element::{element_force, element_operators};
+    use cdem::physics::material::{Material, MaterialLaw, YoungPoisson};
+    use cdem::physics::mohr_coulomb::MohrCoulomb;
+    use cdem::physics::plastic::{plastic_element_force, plastic_operator, TetPlastic, MAX_TETS};
+    use cdem::physics::tet_operator::TetTopology;
+    let strong = RockStrength { cohesion: 1e12, tan_phi: 0.5, tensile: 1e12, tan_psi: 0.0 };
+    let material =
+        Material { lame: YoungPoisson { young: 1e9, poisson: 0.3 }.into(), density: 2000.0, law: MaterialLaw::MohrCoulomb(strong) };
+    let cells: [(CellKind, Vec<[f64; 3]>); 3] = [
+        (CellKind::Hex8, vec![[0., 0., 0.], [1.1, 0., 0.1], [1., 1., 0.], [0., 0.9, 0.], [0., 0., 1.], [1., 0.1, 1.2], [1., 1., 1.], [0.1, 1., 1.]]),
+        (CellKind::Prism6, vec![[0., 0., 0.], [1., 0., 0.], [0., 1., 0.1], [0., 0., 1.], [1.1, 0., 1.], [0., 1., 1.]]),
+        (CellKind::Tet4, vec![[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.]]),
+    ];
+    for (kind, corners) in cells {
+        let n = corners.len();
+        let ops = element_operators(kind, &corners, &material).unwrap();
+        let nodes: Vec<u32> = (0..n as u32).collect();
+        let u: Vec<f64> = (0..3 * n).map(|k| 1e-4 * ((k as f64) * 0.77).sin()).collect();
+        let mut want = vec![0.0; 3 * n];
+        element_force(&ops.k, &nodes, &u, &mut want);
+        let mut got = vec![0.0; 3 * n];
+        let mut hist = [TetPlastic::default(); MAX_TETS];
+        let tets = plastic_operator(kind, &corners);
+        let surface = MohrCoulomb::of(&strong);
+        plastic_element_force(&TetTopology::of(kind), &tets, &ops.grad, material.lame, &surface, &nodes, &u, &mut hist, &mut got);
+        let scale = want.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+        for (g, w) in got.iter().zip(&want) {
+            assert!((g - w).abs() <= 1e-12 * scale, "{kind:?}: {got:?} vs {want:?}");
+        }
+    }
+}

@@ -294,7 +294,7 @@ impl Solver {
             return Err(self.non_finite(state));
         }
         if kinetic > 0.0 && state.step.is_multiple_of(16) {
-            let work = dot(&model.f_ext, &state.u);
+            let work = external_work(model, state);
             // Energy balance: kinetic + strain = work - dissipated <= work.
             // The kinetic energy of central differences (half-step
             // velocities) overstates the true one by up to
@@ -343,6 +343,18 @@ impl HistoryRow {
             max_displacement,
         }
     }
+}
+
+/// The work of the loads and of the supports on `state.u` (J): `f_ext . u`
+/// plus, on fixed components with a prescribed (nonzero) displacement, the
+/// reaction's `(f_int - f_ext) u` (zero where supports hold nodes in place).
+fn external_work(model: &Model, state: &State) -> f64 {
+    let loads = dot(&model.f_ext, &state.u);
+    let supports: f64 = (0..state.u.len())
+        .filter(|&k| model.fixed[k] && state.u[k] != 0.0)
+        .map(|k| (state.f_int[k] - model.f_ext[k]) * state.u[k])
+        .sum();
+    loads + supports
 }
 
 /// `max |f_ext|` over the free components (N).

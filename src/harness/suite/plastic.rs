@@ -104,3 +104,82 @@ pub fn compression(strength: RockStrength, confinement: f64, steps: usize, d_axi
         limit: confinement * n_phi + 2.0 * strength.cohesion * n_phi.sqrt(),
     }
 }
+
+/// A load-displacement curve under a prescribed displacement: FLAC's
+/// velocity-controlled loading (its footing and column verifications). The
+/// nodes of the surface group `group` are moved along z in `increments`
+/// equal steps to `total` (m; they must be fixed in z by the scene), the
+/// failure phase on (plastic blocks yield), `steps` dynamic-relaxation
+/// steps after each increment; the reaction is the z sum of the internal
+/// forces on those nodes (N).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoadCurve {
+    /// (displacement (m), reaction (N)) after each increment.
+    pub points: Vec<(f64, f64)>,
+    /// The loaded group's area, from the plastic blocks' x-y extent at its
+    /// nodes (m^2): the reaction over it is the mean stress.
+    pub area: f64,
+    pub seconds: f64,
+}
+
+impl LoadCurve {
+    /// The mean of the last `n` reactions over the area (Pa): the plateau.
+    pub fn plateau(&self, n: usize) -> f64 {
+        let tail = &self.points[self.points.len().saturating_sub(n)..];
+        tail.iter().map(|p| p.1).sum::<f64>() / tail.len() as f64 / self.area
+    }
+    /// The spread of the last `n` reactions relative to their mean: how flat
+    /// the plateau is.
+    pub fn plateau_spread(&self, n: usize) -> f64 {
+        let tail = &self.points[self.points.len().saturating_sub(n)..];
+        let (lo, hi) = tail.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.1), b.max(p.1)));
+        let mean = tail.iter().map(|p| p.1).sum::<f64>() / tail.len() as f64;
+        (hi - lo) / mean.abs()
+    }
+}
+
+/// Runs the loading of [`LoadCurve`] on `scene`.
+pub fn load_curve(
+    scene: &crate::scene::Scene,
+    group: &str,
+    total: f64,
+    increments: usize,
+    steps: usize,
+) -> Result<LoadCurve, crate::error::Error> {
+    use crate::error::SceneError;
+    let t0 = std::time::Instant::now();
+    let mesh = crate::drivers::read_mesh(scene)?;
+    let model = crate::model::build(&mesh, &scene.model_spec())?;
+    let g = mesh.group(group).ok_or_else(|| SceneError::invalid("group", format!("no group `{group}`")))?;
+    let on: std::collections::HashSet<usize> = mesh.group_nodes(g).into_iter().collect();
+    let nodes: Vec<usize> = (0..model.n_nodes()).filter(|&i| on.contains(&(model.mesh_node[i] as usize))).collect();
+    if let Some(&i) = nodes.iter().find(|&&i| !model.fixed[3 * i + 2]) {
+        return Err(SceneError::invalid("boundary", format!("node {i} of `{group}` is not fixed in z")).into());
+    }
+    let area = {
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for &i in &nodes {
+            for d in 0..2 {
+                lo[d] = lo[d].min(model.x0[i][d]);
+                hi[d] = hi[d].max(model.x0[i][d]);
+            }
+        }
+        (hi[0] - lo[0]) * (hi[1] - lo[1])
+    };
+    let mut solver = crate::solver::Solver::new(&model, scene.solver.clone())?;
+    solver.set_failure(&model, true);
+    let mut state = crate::solver::State::new(&model);
+    let mut points = Vec::with_capacity(increments);
+    for k in 1..=increments {
+        let uz = total * k as f64 / increments as f64;
+        for &i in &nodes {
+            state.u[3 * i + 2] = uz;
+        }
+        for _ in 0..steps {
+            solver.step(&model, &mut state)?;
+        }
+        let reaction: f64 = nodes.iter().map(|&i| state.f_int[3 * i + 2]).sum();
+        points.push((uz, reaction));
+    }
+    Ok(LoadCurve { points, area, seconds: t0.elapsed().as_secs_f64() })
+}
