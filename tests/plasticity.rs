@@ -1,16 +1,19 @@
 //! The Mohr-Coulomb rock mass against closed forms (references/plastic.md).
 
-use cdem::harness::suite::plastic::compression;
+use cdem::harness::registry as reg;
+use cdem::harness::report::record;
+use cdem::harness::suite::plastic::element_limit_row;
 use cdem::physics::material::RockStrength;
 
 #[test]
 fn one_plastic_hexahedron_carries_the_mohr_coulomb_limit_in_plane_strain_compression() {
-    let strength = RockStrength { cohesion: 1e5, tan_phi: 30f64.to_radians().tan(), tensile: f64::INFINITY, tan_psi: 0.0 };
-    for confinement in [0.0, 1e5, 1e6] {
-        let r = compression(strength, confinement, 200, 2e-5);
-        eprintln!("{r:?} error {:.2e}", r.error());
-        assert!(r.error() < 1e-6, "{r:?}");
+    let (row, points) = element_limit_row();
+    record("plasticity", std::slice::from_ref(&row));
+    for r in &points {
+        println!("{r:?} error {:.2e}", r.error());
+        assert!(r.error() < reg::TOL_PLASTIC_ELEMENT, "{r:?}");
     }
+    assert!(row.passed(), "{:?}", row.defect);
 }
 
 /// Elastic, the plastic element's forces (deviatoric per tetrahedron plus
@@ -22,7 +25,7 @@ fn the_elastic_plastic_element_is_its_mixed_stiffness() {
     use cdem::physics::element::{element_force, element_operators};
     use cdem::physics::material::{Material, MaterialLaw, YoungPoisson};
     use cdem::physics::mohr_coulomb::MohrCoulomb;
-    use cdem::physics::plastic::{plastic_element_force, plastic_operator, TetPlastic, MAX_TETS};
+    use cdem::physics::plastic::{plastic_element_force, plastic_operator, TetPlastic, Volumetric, MAX_TETS};
     use cdem::physics::tet_operator::TetTopology;
     let strong = RockStrength { cohesion: 1e12, tan_phi: 0.5, tensile: 1e12, tan_psi: 0.0 };
     let material =
@@ -43,7 +46,7 @@ fn the_elastic_plastic_element_is_its_mixed_stiffness() {
         let mut hist = [TetPlastic::default(); MAX_TETS];
         let tets = plastic_operator(kind, &corners);
         let surface = MohrCoulomb::of(&strong);
-        plastic_element_force(&TetTopology::of(kind), &tets, &ops.grad, material.lame, &surface, &nodes, &u, &mut hist, &mut got);
+        plastic_element_force(&TetTopology::of(kind), &tets, &ops.grad, material.lame, &surface, &nodes, &u, Volumetric::Cell, &mut hist, &mut got);
         let scale = want.iter().fold(0.0f64, |a, v| a.max(v.abs()));
         for (g, w) in got.iter().zip(&want) {
             assert!((g - w).abs() <= 1e-12 * scale, "{kind:?}: {got:?} vs {want:?}");

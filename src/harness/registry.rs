@@ -52,6 +52,8 @@ pub const SKFEM_MD: &str = "references/skfem.md";
 pub const SKFEM_JSON: &str = "references/skfem.json";
 /// Strength reduction: the block on a plane (analytic) and the slopes.
 pub const SRM_MD: &str = "references/srm.md";
+/// The Mohr-Coulomb rock mass (plastic blocks): closed forms, published slopes.
+pub const PLASTIC_MD: &str = "references/plastic.md";
 /// Ensembles: the analytic case, member seeds, determinism, the SLURM run.
 pub const ENSEMBLE_MD: &str = "references/ensemble.md";
 /// Eq. 21/22 on any circle (`[analysis]`): the analytic column circle, the paper slope.
@@ -873,6 +875,8 @@ pub const ROWS: &[RowSpec] = &[
     // Strength reduction on the block on a plane (tests/srm.rs).
     spec("srm/block-friction", "SRM block on plane, theta 30, phi 35, c 0", "FS (strength reduction)", Asserted(TOL_SRM_BLOCK), SRM_MD, "tests/srm.rs"),
     spec("srm/block-cohesion", "SRM block on plane, theta 25, phi 20, c 5 kPa", "FS (strength reduction)", Asserted(TOL_SRM_BLOCK), SRM_MD, "tests/srm.rs"),
+    // The plastic blocks' Mohr-Coulomb limit (tests/plasticity.rs).
+    spec("plastic/element-limit", "one plastic hexahedron, plane-strain compression, c 100 kPa, phi 30, sigma_3 0 / 100 kPa / 1 MPa", "axial stress at the limit vs sigma_3 N_phi + 2 c sqrt(N_phi) (largest error)", Asserted(TOL_PLASTIC_ELEMENT), PLASTIC_MD, "tests/plasticity.rs").with_reference(0.0),
     // Eq. 21 on any circle, `[analysis]` (tests/surface_analysis.rs).
     spec("analysis/column/cdem-vs-analytic", "column, circle (-1.5, 26) r 5", "eq. 21 K from CDEM element stresses vs closed form", Asserted(TOL_EQ21_ANALYTIC), ANALYSIS_MD, "tests/surface_analysis.rs").with_reference(COLUMN_CIRCLE_K.value),
     spec("analysis/column/fem-vs-analytic", "column, circle (-1.5, 26) r 5", "eq. 21 K from FEM cell stresses vs closed form", Asserted(TOL_EQ21_ANALYTIC), ANALYSIS_MD, "tests/surface_analysis.rs").with_reference(COLUMN_CIRCLE_K.value),
@@ -1033,6 +1037,13 @@ pub const BLOCK_SRM_FRICTION_SET: BlockOnPlane =
 /// [`BLOCK_SRM_COHESION`]: FS = 1.2630.
 pub const BLOCK_SRM_COHESION_SET: BlockOnPlane =
     BlockOnPlane { theta_deg: 25.0, phi_deg: 20.0, cohesion: 5000.0, weight: SRM_BLOCK_WEIGHT, area: 1.0 };
+/// One plastic hexahedron's axial stress against the Mohr-Coulomb limit in
+/// plane-strain compression: 1e-9 (measured 8.5e-11 at sigma_3 = 1 MPa, the
+/// lateral stress held to 1e-10 relative by the loading's iterations).
+pub const TOL_PLASTIC_ELEMENT: f64 = 1e-9;
+/// The confining stresses of that check (Pa).
+pub const PLASTIC_ELEMENT_CONFINEMENTS: [f64; 3] = [0.0, 1e5, 1e6];
+
 /// `cdem srm` on the block against the analytic FS: 1 % (the bracket is
 /// 0.01 wide, so its midpoint is within 0.4 % of any FS inside it).
 pub const TOL_SRM_BLOCK: f64 = 0.01;

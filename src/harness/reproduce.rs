@@ -144,6 +144,8 @@ fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Err
     for case in suite::srm::run_all()? {
         rep.checks.push(case.row);
     }
+    progress("plastic blocks: the Mohr-Coulomb limit of one hexahedron");
+    rep.checks.push(suite::plastic::element_limit_row().0);
     progress("analytic ensemble");
     rep.checks.extend(suite::ensemble::segment(root)?.rows);
     rep.checks.extend(validation::pyslope_rows(root)?);

@@ -87,6 +87,7 @@ pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
         el.volume.push(op.volume);
         el.tag.push(cell.tag);
     }
+    plastic.link_vertices(mesh.nodes.len(), |e| mesh.cells[e].corners().iter().map(|&n| n as u32).collect());
     if let Some((i, &m)) = mass.iter().enumerate().find(|(_, &m)| !(m > 0.0)) {
         return Err(ModelError::NonPositiveMass { node: i, mass: m }.into());
     }

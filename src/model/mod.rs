@@ -18,7 +18,7 @@ use crate::mesh::CellKind;
 use crate::physics::element::element_stress;
 use crate::physics::joint::{JointProps, JointState};
 use crate::physics::material::Material;
-use crate::physics::plastic::{cell_plastic, CellPlastic, PlasticCells, RockState};
+use crate::physics::plastic::{cell_plastic, CellPlastic, PlasticCells, RockState, Volumetric};
 use crate::summary::PlasticSummary;
 use crate::physics::spring::Springs;
 use crate::physics::tet_operator::TetOperators;
@@ -167,7 +167,8 @@ impl Model {
     /// Each material's strength and every tetrahedron elastic: the rock
     /// state a run starts from.
     pub fn rock_state(&self) -> RockState {
-        RockState::new(self.materials.iter().map(|m| m.law.strength()).collect(), self.elements.len())
+        let given = self.materials.iter().map(|m| m.law.strength()).collect();
+        RockState::new(given, self.elements.len(), self.mesh_coords.len())
     }
 
     /// Whether any element's material yields (has a strength).
@@ -200,6 +201,10 @@ impl Model {
                             self.materials[material].lame,
                             el.corners(e),
                             u,
+                            match self.plastic.nodal[e] {
+                                true => Volumetric::Nodal(rock.volumetric[e]),
+                                false => Volumetric::Cell,
+                            },
                             &rock.history[e],
                         ),
                         None => CellPlastic { stress: stress[e], ..CellPlastic::default() },

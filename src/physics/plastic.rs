@@ -112,10 +112,47 @@ fn mixed(eps: [f64; 6], e: f64) -> [f64; 6] {
     [eps[0] + shift, eps[1] + shift, eps[2] + shift, eps[3], eps[4], eps[5]]
 }
 
+/// Which volumetric strain a plastic cell's tetrahedra share.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Volumetric {
+    /// The cell's own volume average (a hexahedron: its 24 tetrahedra,
+    /// one pressure per cell as Q1/P0), and its pressure force applied here.
+    Cell,
+    /// This value, the average over the cell's mesh vertices of their
+    /// cells' volumetric strains (prisms and tetrahedra, whose one pressure
+    /// per cell still locks: P1/P0); the caller applies the pressure force
+    /// ([`add_pressure_force`]) from the vertices' mean pressures.
+    Nodal(f64),
+}
+
+/// What one plastic cell's step gives the nodal average: the volumetric
+/// strain its tetrahedra used and their volume-averaged mean stress (Pa).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CellStep {
+    pub volumetric: f64,
+    pub pressure: f64,
+}
+
+/// The volume-averaged volumetric strain of a cell, `sum_t V_t tr(eps_t) / V`.
+pub fn cell_volumetric_strain(topo: &TetTopology, tets: &[TetB], nodes: &[u32], u: &[f64]) -> f64 {
+    tet_strains(topo, tets, &point_displacements(topo, nodes, u)).1
+}
+
+/// Adds a cell's pressure force `P g_c` (`P` = volume times mean stress, N
+/// m... per unit gradient) to its corner forces `f_e`.
+pub fn add_pressure_force(grad: &[[f64; 3]], pressure: f64, f_e: &mut [f64]) {
+    for (fc, g) in f_e.chunks_exact_mut(3).zip(grad) {
+        for i in 0..3 {
+            fc[i] += pressure * g[i];
+        }
+    }
+}
+
 /// Eq. 12 for a plastic cell: writes its corner forces `f_e` (`3n` values)
 /// and advances the history `hist` of its tetrahedra by one return mapping
 /// each (see the module documentation). `grad` are the cell's
-/// volume-averaged corner gradients.
+/// volume-averaged corner gradients, `volume` its volume. With
+/// [`Volumetric::Nodal`] the pressure force is left to the caller.
 #[allow(clippy::too_many_arguments)]
 pub fn plastic_element_force(
     topo: &TetTopology,
@@ -125,13 +162,18 @@ pub fn plastic_element_force(
     surface: &MohrCoulomb,
     nodes: &[u32],
     u: &[f64],
+    volumetric: Volumetric,
     hist: &mut [TetPlastic],
     f_e: &mut [f64],
-) {
+) -> CellStep {
     let d = point_displacements(topo, nodes, u);
-    let (eps, e) = tet_strains(topo, tets, &d);
+    let (eps, own) = tet_strains(topo, tets, &d);
+    let e = match volumetric {
+        Volumetric::Cell => own,
+        Volumetric::Nodal(e) => e,
+    };
     let mut f = [[0.0; 3]; MAX_POINTS];
-    let mut pressure = 0.0; // sum_t V_t p_t
+    let (mut pressure, mut volume) = (0.0, 0.0); // sum_t V_t p_t, sum_t V_t
     for (((t, op), eps), h) in topo.tets.iter().zip(tets).zip(&eps).zip(hist.iter_mut()) {
         let strain = mixed(*eps, e);
         let elastic = [0, 1, 2, 3, 4, 5].map(|i| strain[i] - h.eps_p[i]);
@@ -147,6 +189,7 @@ pub fn plastic_element_force(
         h.now = now;
         let p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
         pressure += op.sqrt_v * op.sqrt_v * p;
+        volume += op.sqrt_v * op.sqrt_v;
         // V_t dev(sigma) grad N_k = sqrt(V_t) dev(sigma) b_k.
         let s = op.sqrt_v;
         let (sxx, syy, szz) = (s * (sigma[0] - p), s * (sigma[1] - p), s * (sigma[2] - p));
@@ -160,11 +203,10 @@ pub fn plastic_element_force(
         }
     }
     corner_forces(topo, &mut f, f_e);
-    for (fc, g) in f_e.chunks_exact_mut(3).zip(grad) {
-        for i in 0..3 {
-            fc[i] += pressure * g[i];
-        }
+    if volumetric == Volumetric::Cell {
+        add_pressure_force(grad, pressure, f_e);
     }
+    CellStep { volumetric: e, pressure: pressure / volume }
 }
 
 /// What a plastic cell looks like now: its volume-averaged stress (Pa,
@@ -179,17 +221,24 @@ pub struct CellPlastic {
     pub plastic_shear: f64,
 }
 
-/// [`CellPlastic`] of one cell from its displacement and history.
+/// [`CellPlastic`] of one cell from its displacement, its volumetric strain
+/// and its history.
+#[allow(clippy::too_many_arguments)]
 pub fn cell_plastic(
     topo: &TetTopology,
     tets: &[TetB],
     lame: Lame,
     nodes: &[u32],
     u: &[f64],
+    volumetric: Volumetric,
     hist: &[TetPlastic],
 ) -> CellPlastic {
     let d = point_displacements(topo, nodes, u);
-    let (eps, e) = tet_strains(topo, tets, &d);
+    let (eps, own) = tet_strains(topo, tets, &d);
+    let e = match volumetric {
+        Volumetric::Cell => own,
+        Volumetric::Nodal(e) => e,
+    };
     let mut out = CellPlastic::default();
     let mut v = 0.0;
     for ((op, eps), h) in tets.iter().zip(&eps).zip(hist) {
@@ -236,16 +285,32 @@ pub struct RockState {
     pub surface: Vec<Option<MohrCoulomb>>,
     /// One history per element, empty if no material yields.
     pub history: Vec<CellHistory>,
+    /// Per element: the volumetric strain its tetrahedra used at the last
+    /// step, and their mean stress (Pa) (the nodal average's inputs).
+    pub volumetric: Vec<f64>,
+    pub pressure: Vec<f64>,
+    /// Per mesh vertex: the averaged volumetric strain and mean stress of
+    /// its nodally averaged cells (scratch of each step).
+    pub vertex_strain: Vec<f64>,
+    pub vertex_pressure: Vec<f64>,
 }
 
 impl RockState {
     /// The state of a model with these material strengths and `n_elements`
     /// elements, every tetrahedron elastic.
-    pub fn new(given: Vec<Option<RockStrength>>, n_elements: usize) -> Self {
+    pub fn new(given: Vec<Option<RockStrength>>, n_elements: usize, n_vertices: usize) -> Self {
         let surface = given.iter().map(|s| s.map(|s| MohrCoulomb::of(&s))).collect();
         let any = given.iter().any(Option::is_some);
-        let history = if any { vec![[TetPlastic::default(); MAX_TETS]; n_elements] } else { Vec::new() };
-        Self { given, surface, history }
+        let (ne, nv) = if any { (n_elements, n_vertices) } else { (0, 0) };
+        Self {
+            given,
+            surface,
+            history: vec![[TetPlastic::default(); MAX_TETS]; ne],
+            volumetric: vec![0.0; ne],
+            pressure: vec![0.0; ne],
+            vertex_strain: vec![0.0; nv],
+            vertex_pressure: vec![0.0; nv],
+        }
     }
 
     /// Strengths divided by `f` ([`RockStrength::reduced`]); the history is kept.
@@ -261,11 +326,18 @@ impl RockState {
 
 /// The per-tetrahedron operators of a model's plastic cells, struct of
 /// arrays: element `e` has tetrahedra `tets[offset[e]..offset[e + 1]]`
-/// (none for an element whose material does not yield).
+/// (none for an element whose material does not yield). Prisms and
+/// tetrahedra average their volumetric strain over the mesh vertices
+/// ([`Volumetric::Nodal`]): `vertex_cells[vertex_ptr[a]..vertex_ptr[a + 1]]`
+/// are the cells at mesh vertex `a`.
 #[derive(Debug, Clone)]
 pub struct PlasticCells {
     pub offset: Vec<usize>,
     pub tets: Vec<TetB>,
+    /// Per element: whether its volumetric strain is the nodal average.
+    pub nodal: Vec<bool>,
+    pub vertex_ptr: Vec<u32>,
+    pub vertex_cells: Vec<u32>,
     topo: [TetTopology; 3],
 }
 
@@ -274,6 +346,9 @@ impl Default for PlasticCells {
         Self {
             offset: vec![0],
             tets: Vec::new(),
+            nodal: Vec::new(),
+            vertex_ptr: vec![0],
+            vertex_cells: Vec::new(),
             topo: [TetTopology::of(CellKind::Tet4), TetTopology::of(CellKind::Prism6), TetTopology::of(CellKind::Hex8)],
         }
     }
@@ -286,6 +361,35 @@ impl PlasticCells {
             self.tets.extend(plastic_operator(kind, corners));
         }
         self.offset.push(self.tets.len());
+        self.nodal.push(plastic && kind != CellKind::Hex8);
+    }
+
+    /// Builds the vertex lists of the nodally averaged cells from each
+    /// element's mesh vertices (`vertices(e)`), `n_vertices` in all.
+    pub fn link_vertices(&mut self, n_vertices: usize, vertices: impl Fn(usize) -> Vec<u32>) {
+        let mut lists: Vec<Vec<u32>> = vec![Vec::new(); n_vertices];
+        for e in (0..self.nodal.len()).filter(|&e| self.nodal[e]) {
+            for a in vertices(e) {
+                lists[a as usize].push(e as u32);
+            }
+        }
+        self.vertex_ptr = std::iter::once(0)
+            .chain(lists.iter().scan(0u32, |n, l| {
+                *n += l.len() as u32;
+                Some(*n)
+            }))
+            .collect();
+        self.vertex_cells = lists.concat();
+    }
+
+    /// The nodally averaged cells at mesh vertex `a`.
+    pub fn vertex(&self, a: usize) -> &[u32] {
+        &self.vertex_cells[self.vertex_ptr[a] as usize..self.vertex_ptr[a + 1] as usize]
+    }
+
+    /// Whether any cell averages over its vertices.
+    pub fn any_nodal(&self) -> bool {
+        !self.vertex_cells.is_empty()
     }
 
     /// The tetrahedra of element `e`.

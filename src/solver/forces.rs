@@ -12,7 +12,9 @@ use rayon::prelude::*;
 use crate::model::{Model, ELEMENT_SLOT};
 use crate::physics::element::element_force;
 use crate::physics::joint::{JointLaw, JointState};
-use crate::physics::plastic::{plastic_element_force, RockState};
+use crate::physics::plastic::{
+    add_pressure_force, cell_volumetric_strain, plastic_element_force, RockState, Volumetric,
+};
 use crate::physics::spring::{relative_displacement, spring_contact_force, SpringState};
 
 /// Smallest number of items a rayon task takes (keeps small models cheap).
@@ -31,21 +33,71 @@ pub fn element_forces(model: &Model, u: &[f64], f_elem: &mut [f64]) {
 
 /// Failure phase with plastic blocks: an element whose material yields
 /// integrates its tetrahedra ([`plastic_element_force`], advancing their
-/// history in `rock`); the others take the fast path.
+/// history in `rock`); the others take the fast path. Prisms and tetrahedra
+/// share the volumetric strain of their mesh vertices
+/// ([`Volumetric::Nodal`]), in five passes, each parallel with a fixed sum
+/// order:
+/// 1. each such cell's own volumetric strain `theta_e`;
+/// 2. each vertex's average `J_a = sum_e w_e theta_e / sum_e w_e` over its
+///    cells, `w_e = V_e / n_e`;
+/// 3. every element's force (a nodal cell uses `mean_(a in e) J_a` and
+///    leaves its pressure force out);
+/// 4. each vertex's mean stress `P_a = sum_e w_e p_e / sum_e w_e`;
+/// 5. each nodal cell's pressure force `V_e mean_(a in e) P_a g_c`, the
+///    virtual work of step 2's average (Bonet & Burton's average nodal
+///    pressure tetrahedron; FLAC's nodal mixed discretization).
 pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_elem: &mut [f64]) {
     let el = &model.elements;
     let cells = &model.plastic;
-    let RockState { surface, history, .. } = rock;
+    let RockState { surface, history, volumetric, pressure, vertex_strain, vertex_pressure, .. } = rock;
     let surface = &*surface;
-    f_elem.par_chunks_mut(ELEMENT_SLOT).zip(history.par_iter_mut()).with_min_len(MIN_LEN / 16).enumerate().for_each(
-        |(e, (f_e, hist))| {
+    let vertex_of = |e: usize| el.corners(e).iter().map(|&n| model.mesh_node[n as usize] as usize);
+    let weight = |e: usize| el.volume[e] / el.corners(e).len() as f64;
+    let vertex_mean = |values: &[f64], a: usize| {
+        let (mut s, mut w) = (0.0, 0.0);
+        for &e in cells.vertex(a) {
+            let e = e as usize;
+            s += weight(e) * values[e];
+            w += weight(e);
+        }
+        if w > 0.0 {
+            s / w
+        } else {
+            0.0
+        }
+    };
+    let nodal = cells.any_nodal();
+    if nodal {
+        volumetric.par_iter_mut().with_min_len(MIN_LEN).enumerate().filter(|(e, _)| cells.nodal[*e]).for_each(
+            |(e, theta)| {
+                *theta = cell_volumetric_strain(cells.topology(el.kind[e]), cells.tets(e), el.corners(e), u);
+            },
+        );
+        let theta = &*volumetric;
+        vertex_strain.par_iter_mut().with_min_len(MIN_LEN).enumerate().for_each(|(a, j)| *j = vertex_mean(theta, a));
+    }
+    let vertex_strain = &*vertex_strain;
+    f_elem
+        .par_chunks_mut(ELEMENT_SLOT)
+        .zip(history.par_iter_mut())
+        .zip(volumetric.par_iter_mut())
+        .zip(pressure.par_iter_mut())
+        .with_min_len(MIN_LEN / 16)
+        .enumerate()
+        .for_each(|(e, (((f_e, hist), theta), p))| {
             let nodes = el.corners(e);
             let f_e = &mut f_e[..3 * nodes.len()];
             let material = el.material[e] as usize;
             match &surface[material] {
                 Some(mc) => {
+                    let mode = match cells.nodal[e] {
+                        true => Volumetric::Nodal(
+                            vertex_of(e).map(|a| vertex_strain[a]).sum::<f64>() / nodes.len() as f64,
+                        ),
+                        false => Volumetric::Cell,
+                    };
                     let r = el.offset[e]..el.offset[e + 1];
-                    plastic_element_force(
+                    let step = plastic_element_force(
                         cells.topology(el.kind[e]),
                         cells.tets(e),
                         &el.grad[r],
@@ -53,14 +105,28 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
                         mc,
                         nodes,
                         u,
+                        mode,
                         hist,
                         f_e,
                     );
+                    (*theta, *p) = (step.volumetric, step.pressure);
                 }
                 None => element_force(el.stiffness(e), nodes, u, f_e),
             }
-        },
-    );
+        });
+    if nodal {
+        let pressure = &*pressure;
+        vertex_pressure.par_iter_mut().with_min_len(MIN_LEN).enumerate().for_each(|(a, q)| *q = vertex_mean(pressure, a));
+        let vertex_pressure = &*vertex_pressure;
+        f_elem.par_chunks_mut(ELEMENT_SLOT).with_min_len(MIN_LEN).enumerate().filter(|(e, _)| cells.nodal[*e]).for_each(
+            |(e, f_e)| {
+                let nodes = el.corners(e);
+                let mean = vertex_of(e).map(|a| vertex_pressure[a]).sum::<f64>() / nodes.len() as f64;
+                let r = el.offset[e]..el.offset[e + 1];
+                add_pressure_force(&el.grad[r], el.volume[e] * mean, &mut f_e[..3 * nodes.len()]);
+            },
+        );
+    }
 }
 
 /// Elastic springs (phase 1, or no breakable interface): eq. 15 only.

@@ -13,7 +13,7 @@ use crate::mesh::shape::CellKind;
 use crate::physics::element::element_operators;
 use crate::physics::material::{Lame, Material, MaterialLaw, RockStrength, YoungPoisson};
 use crate::physics::mohr_coulomb::MohrCoulomb;
-use crate::physics::plastic::{plastic_element_force, plastic_operator, TetPlastic, MAX_TETS};
+use crate::physics::plastic::{plastic_element_force, plastic_operator, TetPlastic, Volumetric, MAX_TETS};
 use crate::physics::tet_operator::TetTopology;
 
 /// The unit cube's corners in gmsh's hexahedron order.
@@ -68,7 +68,7 @@ pub fn compression(strength: RockStrength, confinement: f64, steps: usize, d_axi
     let mut f = [0.0; 24];
     let mut forces = |exx: f64, ezz: f64, hist: &mut [TetPlastic]| {
         let u: Vec<f64> = UNIT_HEX.iter().flat_map(|x| [exx * x[0], 0.0, ezz * x[2]]).collect();
-        plastic_element_force(&topo, &tets, &ops.grad, lame, &surface, &nodes, &u, hist, &mut f);
+        plastic_element_force(&topo, &tets, &ops.grad, lame, &surface, &nodes, &u, Volumetric::Cell, hist, &mut f);
         // Top face (z = 1, corners 4-7): sigma_zz = sum f_z; the face x = 1
         // (corners 1, 2, 5, 6): sigma_xx = sum f_x.
         let szz: f64 = (4..8).map(|c| f[3 * c + 2]).sum();
@@ -182,4 +182,18 @@ pub fn load_curve(
         points.push((uz, reaction));
     }
     Ok(LoadCurve { points, area, seconds: t0.elapsed().as_secs_f64() })
+}
+
+/// The row `plastic/element-limit`: the largest relative error of
+/// [`compression`] over the confinements of the registry (c = 100 kPa,
+/// phi = 30 deg, psi = 0, no cut-off), and the points.
+pub fn element_limit_row() -> (crate::harness::report::Check, Vec<CompressionLimit>) {
+    use crate::harness::registry as reg;
+    let t0 = std::time::Instant::now();
+    let strength =
+        RockStrength { cohesion: 1e5, tan_phi: 30f64.to_radians().tan(), tensile: f64::INFINITY, tan_psi: 0.0 };
+    let points: Vec<CompressionLimit> =
+        reg::PLASTIC_ELEMENT_CONFINEMENTS.iter().map(|&s3| compression(strength, s3, 200, 2e-5)).collect();
+    let worst = points.iter().map(CompressionLimit::error).fold(0.0, f64::max);
+    (reg::row("plastic/element-limit").value(worst, 0.0, t0.elapsed().as_secs_f64()), points)
 }
