@@ -218,16 +218,17 @@ def cases():
     out = {}
     # 1. Hoek & Bray's plane failure as the issue gives it (dry crack 9 m behind the crest).
     out["plane"] = plane_failure(H=30.0, psi_f=60.0, psi_p=30.0, c=48.0, phi=30.0, gamma=25.5, b=9.0)
-    # 2a. The verification wedge of verification/joints/wedge.toml: symmetric,
-    # planes 55 deg dipping 30 deg either side of the face's dip direction
-    # (face 75/270, top horizontal), friction 30 deg, no cohesion.
+    # 2a. The verification wedge of verification/joints/wedge-geometry.toml:
+    # symmetric, planes 55 deg dipping 55 deg either side of the face's dip
+    # direction (face 75/270, top horizontal, H = 12 m), friction 35 deg, no
+    # cohesion.
     face, top = (75.0, 270.0), (0.0, 270.0)
-    j1, j2 = (55.0, 240.0), (55.0, 300.0)
+    j1, j2 = (55.0, 215.0), (55.0, 325.0)
     K, psi_i, beta, xi = wedge_factor(normal(*j1), normal(*j2))
-    vec = wedge_vector([j1, j2, top, face], H=12.0, gamma=26.0, strengths=[(0.0, 30.0), (0.0, 30.0)])
+    vec = wedge_vector([j1, j2, top, face], H=12.0, gamma=2600.0 * 9.81, strengths=[(0.0, 35.0), (0.0, 35.0)])
     out["wedge_symmetric"] = {
         "K": K, "psi_i": psi_i, "beta": beta, "xi": xi,
-        "FS_wedge_factor": K * math.tan(D(30.0)) / math.tan(D(psi_i)),
+        "FS_wedge_factor": K * math.tan(D(35.0)) / math.tan(D(psi_i)),
         "FS_vector": vec["FS"], "W": vec["W"], "volume": vec["volume"],
         "plunge": vec["plunge"], "trend": vec["trend"],
     }
@@ -268,7 +269,7 @@ def main():
     print(
         f"symmetric wedge: psi_i = {w['psi_i']:.4f}, trend {w['trend']:.2f}, xi = {w['xi']:.4f}, "
         f"beta = {w['beta']:.4f}, K = {w['K']:.5f}, FS (wedge factor) = {w['FS_wedge_factor']:.5f}, "
-        f"FS (vector) = {w['FS_vector']:.5f}, W = {w['W']:.1f} kN"
+        f"FS (vector) = {w['FS_vector']:.5f}, W = {w['W']:.1f} N, V = {w['volume']:.2f} m^3"
     )
     g = out["wedge_hoek_bray"]
     print(
@@ -279,6 +280,8 @@ def main():
     )
     t = out["toppling"]
     print(f"toppling: heights {t['heights']}")
+    _, below = toppling_p0(toppling_blocks(10.0, 5.0, 5.0, 1.0, 10, 16), 10.0, 30.0, t["phi_limit"] - 0.01)
+    print(f"toppling: modes at phi_limit - 0.01: {below}")
     print(f"toppling: limit phi = {t['phi_limit']:.4f} deg; modes {t['modes_at_limit']}")
     print(f"toppling: FS (tan 38.15 / tan phi_limit) = {t['FS_at_38.15']:.4f}")
 

@@ -58,6 +58,8 @@ pub const ENSEMBLE_MD: &str = "references/ensemble.md";
 pub const ANALYSIS_MD: &str = "references/analysis.md";
 /// The Wulong landslide: the paper's and ours.
 pub const WULONG_MD: &str = "references/wulong.md";
+/// Joint sets: plane, wedge and toppling failure against their closed forms.
+pub const JOINTS_MD: &str = "references/joints.md";
 /// The performance goals and measurements.
 pub const PERFORMANCE_MD: &str = "references/performance.md";
 /// pySlope's Bishop FS on our critical circles (read by tests/lem.rs).
@@ -235,8 +237,24 @@ pub const COLUMN_CIRCLE: Case = Case {
     source: ANALYSIS_MD,
 };
 
+/// Plane failure with a dry tension crack (Hoek & Bray), from joint sets.
+pub const PLANE_FAILURE: Case = Case {
+    name: "plane failure, dry tension crack (Hoek & Bray)",
+    input: "verification/joints/plane.toml",
+    checks: "`cdem srm` FS against Hoek & Bray's closed form within 1 % (tests/joints.rs)",
+    source: JOINTS_MD,
+};
+
+/// A symmetric wedge (3D), from joint sets.
+pub const WEDGE_SYMMETRIC: Case = Case {
+    name: "symmetric wedge (Hoek & Bray wedge factor)",
+    input: "verification/joints/wedge.toml",
+    checks: "`cdem srm` FS against the wedge factor's closed form within 1 % (tests/joints.rs)",
+    source: JOINTS_MD,
+};
+
 /// Every case above (the extreme suite is [`extreme_cases`]).
-pub const CASES: [Case; 13] = [
+pub const CASES: [Case; 15] = [
     COLUMN,
     COLUMN_MERGED,
     SLOPE,
@@ -250,6 +268,8 @@ pub const CASES: [Case; 13] = [
     BLOCK_SRM_FRICTION,
     BLOCK_SRM_COHESION,
     COLUMN_CIRCLE,
+    PLANE_FAILURE,
+    WEDGE_SYMMETRIC,
 ];
 
 // ---------------------------------------------------------------------------
@@ -873,6 +893,9 @@ pub const ROWS: &[RowSpec] = &[
     // Strength reduction on the block on a plane (tests/srm.rs).
     spec("srm/block-friction", "SRM block on plane, theta 30, phi 35, c 0", "FS (strength reduction)", Asserted(TOL_SRM_BLOCK), SRM_MD, "tests/srm.rs"),
     spec("srm/block-cohesion", "SRM block on plane, theta 25, phi 20, c 5 kPa", "FS (strength reduction)", Asserted(TOL_SRM_BLOCK), SRM_MD, "tests/srm.rs"),
+    // Joint sets: the rock-slope mechanisms against their closed forms (tests/joints.rs).
+    spec("joints/plane-srm", "plane failure, dry tension crack (Hoek & Bray)", "FS (strength reduction) vs closed form", Asserted(TOL_JOINTS_SRM), JOINTS_MD, "tests/joints.rs"),
+    spec("joints/wedge-srm", "symmetric wedge, 3D (Hoek & Bray wedge factor)", "FS (strength reduction) vs closed form", Asserted(TOL_JOINTS_SRM), JOINTS_MD, "tests/joints.rs"),
     // Eq. 21 on any circle, `[analysis]` (tests/surface_analysis.rs).
     spec("analysis/column/cdem-vs-analytic", "column, circle (-1.5, 26) r 5", "eq. 21 K from CDEM element stresses vs closed form", Asserted(TOL_EQ21_ANALYTIC), ANALYSIS_MD, "tests/surface_analysis.rs").with_reference(COLUMN_CIRCLE_K.value),
     spec("analysis/column/fem-vs-analytic", "column, circle (-1.5, 26) r 5", "eq. 21 K from FEM cell stresses vs closed form", Asserted(TOL_EQ21_ANALYTIC), ANALYSIS_MD, "tests/surface_analysis.rs").with_reference(COLUMN_CIRCLE_K.value),
@@ -921,6 +944,105 @@ pub fn rows() -> Vec<RowSpec> {
 pub fn row(id: &str) -> RowSpec {
     rows().into_iter().find(|r| r.id == id).unwrap_or_else(|| panic!("no row {id:?} in registry::ROWS"))
 }
+
+// ---------------------------------------------------------------------------
+// Joint sets: the closed forms of the rock-slope mechanisms (references/joints.md;
+// scripts/rock_slope_closed_forms.py computes the same numbers independently).
+
+/// Plane failure with a dry tension crack in the upper slope surface (Hoek &
+/// Bray, Rock Slope Engineering, ch. 7): the slope `height` H, the face and the
+/// sliding plane (through the toe) dipping `face_dip` and `plane_dip`, the
+/// crack vertical, `crack_behind_crest` b behind the crest.
+#[derive(Debug, Clone, Copy)]
+pub struct PlaneFailure {
+    pub height: f64,
+    pub face_dip: f64,
+    pub plane_dip: f64,
+    /// Pa.
+    pub cohesion: f64,
+    pub friction_deg: f64,
+    /// N/m^3.
+    pub unit_weight: f64,
+    pub crack_behind_crest: f64,
+}
+
+impl PlaneFailure {
+    /// The crack depth `z = H - (H cot(psi_f) + b) tan(psi_p)` (m).
+    pub fn crack_depth(&self) -> f64 {
+        let (tf, tp) = (self.face_dip.to_radians().tan(), self.plane_dip.to_radians().tan());
+        self.height - (self.height / tf + self.crack_behind_crest) * tp
+    }
+    /// `FS = (c A + W cos(psi_p) tan(phi)) / (W sin(psi_p))` with
+    /// `A = (H - z) / sin(psi_p)` and
+    /// `W = 1/2 gamma H^2 [(1 - (z/H)^2) cot(psi_p) - cot(psi_f)]` (per m of width).
+    pub fn fs(&self) -> f64 {
+        let (h, z) = (self.height, self.crack_depth());
+        let (pf, pp) = (self.face_dip.to_radians(), self.plane_dip.to_radians());
+        let area = (h - z) / pp.sin();
+        let w = 0.5 * self.unit_weight * h * h * ((1.0 - (z / h).powi(2)) / pp.tan() - 1.0 / pf.tan());
+        (self.cohesion * area + w * pp.cos() * self.friction_deg.to_radians().tan()) / (w * pp.sin())
+    }
+}
+
+/// [`PLANE_FAILURE`]: the issue's transcription of Hoek & Bray's case, FS = 1.3469.
+pub const PLANE_FAILURE_SET: PlaneFailure = PlaneFailure {
+    height: 30.0,
+    face_dip: 60.0,
+    plane_dip: 30.0,
+    cohesion: 48.0e3,
+    friction_deg: 30.0,
+    unit_weight: 25.5e3,
+    crack_behind_crest: 9.0,
+};
+
+/// A wedge on two planes (dip, dip direction in degrees) of equal friction
+/// and no cohesion, sliding along their line of intersection (Hoek & Bray
+/// ch. 8): `FS = K tan(phi) / tan(psi_i)` with the wedge factor
+/// `K = sin(beta) / sin(xi / 2)`, `xi` the wedge's included angle and `beta`
+/// the tilt of its bisector, both in the section normal to the line of
+/// intersection, `psi_i` its plunge.
+#[derive(Debug, Clone, Copy)]
+pub struct WedgeFactor {
+    pub plane_a: (f64, f64),
+    pub plane_b: (f64, f64),
+    pub friction_deg: f64,
+}
+
+impl WedgeFactor {
+    fn normal((dip, dd): (f64, f64)) -> [f64; 3] {
+        let (d, a) = (dip.to_radians(), dd.to_radians());
+        [d.sin() * a.sin(), d.sin() * a.cos(), d.cos()]
+    }
+    /// `(K, psi_i in degrees)`.
+    pub fn factor(&self) -> (f64, f64) {
+        let (a, b) = (Self::normal(self.plane_a), Self::normal(self.plane_b));
+        let dot = |u: [f64; 3], v: [f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+        let i = [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+        let i = i.map(|c| c / dot(i, i).sqrt());
+        let psi_i = i[2].abs().asin();
+        let xi = std::f64::consts::PI - dot(a, b).acos();
+        let bis = [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
+        let bis = bis.map(|c| c / dot(bis, bis).sqrt());
+        let up = [-i[0] * i[2], -i[1] * i[2], 1.0 - i[2] * i[2]];
+        let up = up.map(|c| c / dot(up, up).sqrt());
+        let beta = dot(bis, up).clamp(-1.0, 1.0).asin();
+        (beta.sin() / (0.5 * xi).sin(), psi_i.to_degrees())
+    }
+    pub fn fs(&self) -> f64 {
+        let (k, psi_i) = self.factor();
+        k * self.friction_deg.to_radians().tan() / psi_i.to_radians().tan()
+    }
+}
+
+/// [`WEDGE_SYMMETRIC`]: planes 55/215 and 55/325, phi 35: K = 1.3487, psi_i = 39.32, FS = 1.1529.
+pub const WEDGE_SYMMETRIC_SET: WedgeFactor =
+    WedgeFactor { plane_a: (55.0, 215.0), plane_b: (55.0, 325.0), friction_deg: 35.0 };
+
+/// `cdem srm` on the joint-set cases against their closed forms: 1 %. The
+/// final bracket is 0.01 wide, so its midpoint lies within 0.43 % of any FS
+/// inside it at FS 1.15; the rest is the mesh (references/joints.md: measured
+/// 0.29 % plane, 0.07 % wedge). The issue asked for 3 %.
+pub const TOL_JOINTS_SRM: f64 = 0.01;
 
 #[cfg(test)]
 mod tests {

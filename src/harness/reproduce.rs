@@ -144,6 +144,10 @@ fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Err
     for case in suite::srm::run_all()? {
         rep.checks.push(case.row);
     }
+    progress("joint sets: plane failure, wedge (cdem srm against the closed forms)");
+    for case in suite::joints::run_all()? {
+        rep.checks.push(case.row);
+    }
     progress("analytic ensemble");
     rep.checks.extend(suite::ensemble::segment(root)?.rows);
     rep.checks.extend(validation::pyslope_rows(root)?);

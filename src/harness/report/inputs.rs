@@ -17,7 +17,7 @@ use std::path::Path;
 /// The committed meshes and their sources, which `meshes/regenerated`
 /// compares: every case folder under this one, and [`MESH_DIRS`].
 const CASE_DIRS: &str = "verification/cases";
-const MESH_DIRS: [&str; 3] = ["verification/extreme", "verification/study", "verification/tutorial"];
+const MESH_DIRS: [&str; 4] = ["verification/extreme", "verification/study", "verification/tutorial", "verification/joints"];
 
 /// Row-id prefix, and the files (relative to the repository root) its rows
 /// read besides their source. The extreme rows read
@@ -40,6 +40,8 @@ pub const DECLARED: &[(&str, &[&str])] = &[
     ("block/", &["tests/fixtures/block-on-plane.toml"]),
     ("srm/block-friction", &["verification/cases/block-srm/block-srm-friction.toml"]),
     ("srm/block-cohesion", &["verification/cases/block-srm/block-srm-cohesion.toml"]),
+    ("joints/plane-srm", &["verification/joints/plane.toml", "verification/joints/plane-geometry.toml"]),
+    ("joints/wedge-srm", &["verification/joints/wedge.toml", "verification/joints/wedge-geometry.toml"]),
     ("analysis/column/", &["verification/analysis/column-circle.toml"]),
     ("analysis/slope/", &["verification/cases/slope/slope.toml"]),
     ("ensemble/segment/", &["verification/ensemble/cohesive-segment.toml"]),
