@@ -47,6 +47,13 @@ enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
     },
+    /// Kinematic analysis of a geometry file's joint sets on its slope face (Markland / Hoek-Bray:
+    /// plane sliding, wedge sliding, flexural toppling): DIR/kinematics.md and stereonet.png.
+    Kinematics {
+        geometry: PathBuf,
+        #[arg(long, default_value = "out-kinematics")]
+        out: PathBuf,
+    },
     /// Solve the scene with the implicit FEM reference (continuous mesh); write summary.json and VTK.
     Fem {
         scene: PathBuf,
@@ -270,6 +277,11 @@ fn main() -> ExitCode {
             let out = out.unwrap_or_else(|| geo.with_extension("msh"));
             reached(cdem::mesh::gmsh::regenerate(&geo, &out).map(|_| eprintln!("wrote {}", out.display())))
         }
+        Command::Kinematics { geometry, out } => reached(cdem::app::kinematics::kinematics(&geometry, &out).map(|k| {
+            print!("{}", k.table);
+            eprintln!("wrote {}", out.join("kinematics.md").display());
+            eprintln!("wrote {}", out.join("stereonet.png").display());
+        })),
         Command::Lem { input, out } => reached(lem(&input, out.as_deref())),
         Command::Ensemble(args) => reached(ensemble(args)),
         Command::Study { out } => {

@@ -253,8 +253,16 @@ pub const WEDGE_SYMMETRIC: Case = Case {
     source: JOINTS_MD,
 };
 
+/// Goodman & Bray's block toppling example (16 blocks on a stepped base).
+pub const TOPPLING: Case = Case {
+    name: "block toppling (Goodman & Bray 1976)",
+    input: "verification/joints/toppling.toml",
+    checks: "`cdem srm` FS against the Goodman-Bray recursion within 5 % (tests/joints.rs)",
+    source: JOINTS_MD,
+};
+
 /// Every case above (the extreme suite is [`extreme_cases`]).
-pub const CASES: [Case; 15] = [
+pub const CASES: [Case; 16] = [
     COLUMN,
     COLUMN_MERGED,
     SLOPE,
@@ -270,6 +278,7 @@ pub const CASES: [Case; 15] = [
     COLUMN_CIRCLE,
     PLANE_FAILURE,
     WEDGE_SYMMETRIC,
+    TOPPLING,
 ];
 
 // ---------------------------------------------------------------------------
@@ -896,6 +905,7 @@ pub const ROWS: &[RowSpec] = &[
     // Joint sets: the rock-slope mechanisms against their closed forms (tests/joints.rs).
     spec("joints/plane-srm", "plane failure, dry tension crack (Hoek & Bray)", "FS (strength reduction) vs closed form", Asserted(TOL_JOINTS_SRM), JOINTS_MD, "tests/joints.rs"),
     spec("joints/wedge-srm", "symmetric wedge, 3D (Hoek & Bray wedge factor)", "FS (strength reduction) vs closed form", Asserted(TOL_JOINTS_SRM), JOINTS_MD, "tests/joints.rs"),
+    spec("joints/toppling-srm", "block toppling, 16 blocks (Goodman & Bray 1976)", "FS (strength reduction) vs the Goodman-Bray recursion", Asserted(TOL_JOINTS_TOPPLING), JOINTS_MD, "tests/joints.rs"),
     // Eq. 21 on any circle, `[analysis]` (tests/surface_analysis.rs).
     spec("analysis/column/cdem-vs-analytic", "column, circle (-1.5, 26) r 5", "eq. 21 K from CDEM element stresses vs closed form", Asserted(TOL_EQ21_ANALYTIC), ANALYSIS_MD, "tests/surface_analysis.rs").with_reference(COLUMN_CIRCLE_K.value),
     spec("analysis/column/fem-vs-analytic", "column, circle (-1.5, 26) r 5", "eq. 21 K from FEM cell stresses vs closed form", Asserted(TOL_EQ21_ANALYTIC), ANALYSIS_MD, "tests/surface_analysis.rs").with_reference(COLUMN_CIRCLE_K.value),
@@ -1043,6 +1053,79 @@ pub const WEDGE_SYMMETRIC_SET: WedgeFactor =
 /// inside it at FS 1.15; the rest is the mesh (references/joints.md: measured
 /// 0.29 % plane, 0.07 % wedge). The issue asked for 3 %.
 pub const TOL_JOINTS_SRM: f64 = 0.01;
+
+/// Block toppling on a stepped base (Goodman & Bray 1976; Hoek & Bray ch. 9):
+/// blocks `dx` wide on a base dipping `psi_p` (degrees), heights
+/// `y_n = n (a1 - b)` up to the crest block `n_crest`, `y_{n-1} - a2 - b` above.
+#[derive(Debug, Clone, Copy)]
+pub struct GoodmanBray {
+    pub dx: f64,
+    pub psi_p: f64,
+    pub a1: f64,
+    pub a2: f64,
+    pub b: f64,
+    pub n_crest: usize,
+    pub n_blocks: usize,
+}
+
+impl GoodmanBray {
+    /// `(y_n, M_n, L_n)` for `n = 1..n_blocks`: the height, where the force
+    /// from the block above acts on the upper face, where the force on the
+    /// block below acts on the lower face.
+    pub fn blocks(&self) -> Vec<(f64, f64, f64)> {
+        let mut y = 0.0;
+        (1..=self.n_blocks)
+            .map(|n| {
+                y = if n <= self.n_crest { n as f64 * (self.a1 - self.b) } else { y - self.a2 - self.b };
+                match n.cmp(&self.n_crest) {
+                    std::cmp::Ordering::Less => (y, y, y - self.a1),
+                    std::cmp::Ordering::Equal => (y, y - self.a2, y - self.a1),
+                    std::cmp::Ordering::Greater => (y, y - self.a2, y),
+                }
+            })
+            .collect()
+    }
+    /// The support force at the toe per unit weight, `P_0 / gamma`, from the
+    /// top block down: `P_{n-1}` the larger of
+    /// `P_{n-1,t} = [P_n (M_n - dx tan(phi)) + W_n/2 (y_n sin(psi) - dx cos(psi))] / L_n`
+    /// and `P_{n-1,s} = P_n - W_n (tan(phi) cos(psi) - sin(psi)) / (1 - tan(phi)^2)`,
+    /// zero where both are negative (a stable block).
+    pub fn p0(&self, phi_deg: f64) -> f64 {
+        let (t, s, c) = (phi_deg.to_radians().tan(), self.psi_p.to_radians().sin(), self.psi_p.to_radians().cos());
+        self.blocks().iter().rev().fold(0.0, |p, &(y, m, l)| {
+            let w = y * self.dx;
+            let topple = if l > 0.0 { (p * (m - self.dx * t) + 0.5 * w * (y * s - self.dx * c)) / l } else { f64::NEG_INFINITY };
+            let slide = p - w * (t * c - s) / (1.0 - t * t);
+            topple.max(slide).max(0.0)
+        })
+    }
+    /// The friction angle at which `P_0 = 0` (degrees; bisection on [30, 50]).
+    pub fn limit_friction(&self) -> f64 {
+        let (mut lo, mut hi) = (30.0, 50.0);
+        for _ in 0..100 {
+            let mid = 0.5 * (lo + hi);
+            if self.p0(mid) > 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    }
+    /// `FS = tan(phi) / tan(phi_limit)`.
+    pub fn fs(&self, phi_deg: f64) -> f64 {
+        phi_deg.to_radians().tan() / self.limit_friction().to_radians().tan()
+    }
+}
+
+/// [`TOPPLING`]: Goodman & Bray's example, limit friction 38.151 deg (published 38.15).
+pub const TOPPLING_SET: GoodmanBray = GoodmanBray { dx: 10.0, psi_p: 30.0, a1: 5.0, a2: 5.0, b: 1.0, n_crest: 10, n_blocks: 16 };
+/// The joints' friction angle of [`TOPPLING`] (degrees): the published limit.
+pub const TOPPLING_FRICTION_DEG: f64 = 38.15;
+/// `cdem srm` on [`TOPPLING`] against the recursion: 5 %, the issue's bound
+/// (references/joints.md: measured +3.5 %, ours high; not a joint-stiffness
+/// effect).
+pub const TOL_JOINTS_TOPPLING: f64 = 0.05;
 
 #[cfg(test)]
 mod tests {

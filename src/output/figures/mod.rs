@@ -10,5 +10,6 @@ pub mod ensemble;
 pub mod mechanism;
 pub mod plot;
 pub mod section;
+pub mod stereonet;
 
 pub use plot::*;
