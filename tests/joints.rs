@@ -125,6 +125,10 @@ fn run_case(i: usize, test: &str) {
         println!("  F = {:.4}: {:?} after {} steps", t.factor, t.outcome, t.steps);
     }
     assert!(run.row.passed(), "{:?}", run.row.defect);
+    // The mechanism's figure (as `cdem reproduce` draws it).
+    let png = std::env::temp_dir().join(format!("cdem-{test}-{}.png", std::process::id()));
+    assert!(cdem::output::figures::joints::mechanism_views(r, &run.model, &png).unwrap());
+    println!("mechanism: {}", png.display());
 }
 
 #[test]

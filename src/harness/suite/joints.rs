@@ -11,6 +11,7 @@ use crate::drivers::{run_srm, SrmResult};
 use crate::error::Error;
 use crate::harness::registry::{self as reg, Case, TOL_JOINTS_SRM, TOL_JOINTS_TOPPLING};
 use crate::harness::report::Check;
+use crate::model::Model;
 use crate::harness::suite::srm::BRACKET_WIDTH;
 use crate::EndState;
 
@@ -22,6 +23,8 @@ pub struct JointRun {
     /// Tetrahedra of the mesh.
     pub cells: usize,
     pub row: Check,
+    /// The model (for the mechanism's figure).
+    pub model: Model,
 }
 
 /// The cases: (case, closed-form FS, row id).
@@ -55,7 +58,7 @@ pub fn run(case: Case, closed_form: f64, id: &str) -> Result<JointRun, Error> {
     if let Some(d) = defect(&result, closed_form, tolerance(id)) {
         row = row.with_defect(d);
     }
-    Ok(JointRun { case, result, closed_form, cells: model.elements.len(), row })
+    Ok(JointRun { case, result, closed_form, cells: model.elements.len(), row, model })
 }
 
 /// What is wrong with a reduction, if anything.

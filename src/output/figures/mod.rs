@@ -7,6 +7,7 @@
 
 pub mod analysis;
 pub mod ensemble;
+pub mod joints;
 pub mod mechanism;
 pub mod plot;
 pub mod section;
