@@ -53,7 +53,11 @@ fn committed_geo_files_are_what_cdem_mesh_writes() {
         let name = geometry.name.clone().unwrap();
         let source = path.file_name().unwrap().to_string_lossy().into_owned();
         let committed = std::fs::read_to_string(path.with_file_name(format!("{name}.geo"))).unwrap();
-        assert_eq!(geometry.geo(&source).unwrap(), committed, "{g}: regenerate with cdem mesh {g} --out verification/joints");
+        assert_eq!(
+            geometry.geo(&source).unwrap(),
+            committed,
+            "{g}: regenerate with cdem mesh {g} --out verification/joints"
+        );
         // The skeleton is a scene that loads and validates.
         let skeleton = geometry.scene_skeleton(&format!("{name}.msh"), &source);
         let scene = Scene::from_toml(&skeleton, path.parent().unwrap(), &path).unwrap();

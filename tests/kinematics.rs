@@ -17,7 +17,12 @@ fn close(l: Line, plunge: f64, trend: f64, tol: f64) {
 fn lines_of_intersection_match_hand_computed_ones() {
     // Two planes dipping 45 deg east and south: the line bisects them, trending 135 deg,
     // its plunge the apparent dip of either along 135: atan(tan 45 cos 45) = 35.264 deg.
-    close(intersection(plane(45.0, 90.0), plane(45.0, 180.0)).unwrap(), 0.707107f64.atan().to_degrees(), 135.0, 1e-4);
+    close(
+        intersection(plane(45.0, 90.0), plane(45.0, 180.0)).unwrap(),
+        std::f64::consts::FRAC_1_SQRT_2.atan().to_degrees(),
+        135.0,
+        1e-9,
+    );
     // The symmetric wedge of verification/joints: 55/215 and 55/325 meet along 270 at
     // atan(tan 55 cos 55) = 39.3227 deg.
     let psi = (55f64.to_radians().tan() * 55f64.to_radians().cos()).atan().to_degrees();

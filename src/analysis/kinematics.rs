@@ -73,7 +73,10 @@ pub fn intersection(a: Orientation, b: Orientation) -> Option<Line> {
     }
     let s = if i[2] > 0.0 { -1.0 / len } else { 1.0 / len };
     let i = i.map(|c| c * s);
-    Some(Line { plunge: (-i[2]).clamp(-1.0, 1.0).asin().to_degrees(), trend: i[0].atan2(i[1]).to_degrees().rem_euclid(360.0) })
+    Some(Line {
+        plunge: (-i[2]).clamp(-1.0, 1.0).asin().to_degrees(),
+        trend: i[0].atan2(i[1]).to_degrees().rem_euclid(360.0),
+    })
 }
 
 /// A joint set as the kinematic tests see it.
@@ -135,7 +138,11 @@ pub fn analyse(sets: &[SetInput], face: Orientation) -> (Vec<SetTests>, Vec<Pair
     let singles = sets
         .iter()
         .enumerate()
-        .map(|(i, &s)| SetTests { set: i, plane_sliding: plane_sliding(s, face), flexural_toppling: flexural_toppling(s, face) })
+        .map(|(i, &s)| SetTests {
+            set: i,
+            plane_sliding: plane_sliding(s, face),
+            flexural_toppling: flexural_toppling(s, face),
+        })
         .collect();
     let mut pairs = Vec::new();
     for i in 0..sets.len() {

@@ -30,9 +30,15 @@ pub fn inputs(g: &Geometry) -> Result<(Orientation, Vec<SetInput>), SceneError> 
         .enumerate()
         .map(|(i, j)| {
             let friction = j.strength.map(|s| s.friction_angle).ok_or_else(|| {
-                SceneError::invalid(format!("joint_set[{i}].strength"), "the kinematic tests need the set's friction angle")
+                SceneError::invalid(
+                    format!("joint_set[{i}].strength"),
+                    "the kinematic tests need the set's friction angle",
+                )
             })?;
-            Ok(SetInput { orientation: Orientation { dip: j.dip, dip_direction: j.dip_direction.rem_euclid(360.0) }, friction })
+            Ok(SetInput {
+                orientation: Orientation { dip: j.dip, dip_direction: j.dip_direction.rem_euclid(360.0) },
+                friction,
+            })
         })
         .collect::<Result<Vec<_>, SceneError>>()?;
     Ok((face, sets))
@@ -42,8 +48,15 @@ pub fn inputs(g: &Geometry) -> Result<(Orientation, Vec<SetInput>), SceneError> 
 pub fn table(face: Orientation, sets: &[SetInput], singles: &[SetTests], pairs: &[PairTest]) -> String {
     let yes = |b: bool| if b { "possible" } else { "-" };
     let mut t = String::new();
-    let _ = writeln!(t, "Slope face {:.1}/{:05.1} (dip/dip direction); lateral limits +-{LATERAL_LIMIT} deg.\n", face.dip, face.dip_direction);
-    let _ = writeln!(t, "| set | dip/dip direction | friction | plane sliding | flexural toppling |\n|---|---|---|---|---|");
+    let _ = writeln!(
+        t,
+        "Slope face {:.1}/{:05.1} (dip/dip direction); lateral limits +-{LATERAL_LIMIT} deg.\n",
+        face.dip, face.dip_direction
+    );
+    let _ = writeln!(
+        t,
+        "| set | dip/dip direction | friction | plane sliding | flexural toppling |\n|---|---|---|---|---|"
+    );
     for s in singles {
         let o = sets[s.set].orientation;
         let _ = writeln!(
@@ -61,7 +74,8 @@ pub fn table(face: Orientation, sets: &[SetInput], singles: &[SetTests], pairs: 
         let _ = writeln!(t, "\n| pair | intersection plunge -> trend | face apparent dip along it | friction | wedge sliding |\n|---|---|---|---|---|");
         for p in pairs {
             let (a, b) = p.sets;
-            let line = p.intersection.map_or("parallel".to_string(), |l| format!("{:.2} -> {:06.2}", l.plunge.abs(), l.trend));
+            let line =
+                p.intersection.map_or("parallel".to_string(), |l| format!("{:.2} -> {:06.2}", l.plunge.abs(), l.trend));
             let friction = sets[a].friction.min(sets[b].friction);
             let _ = writeln!(
                 t,
@@ -84,7 +98,8 @@ pub fn kinematics(path: &Path, out: &Path) -> crate::Result<Kinematics> {
     let table = table(face, &sets, &singles, &pairs);
     std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
     let md = out.join("kinematics.md");
-    std::fs::write(&md, format!("# Kinematic analysis of {}\n\n{table}", path.display())).map_err(|e| Error::io(&md, e))?;
+    std::fs::write(&md, format!("# Kinematic analysis of {}\n\n{table}", path.display()))
+        .map_err(|e| Error::io(&md, e))?;
     let labelled: Vec<(String, Orientation)> =
         sets.iter().enumerate().map(|(i, s)| (format!("set{}", i + 1), s.orientation)).collect();
     let friction = sets.iter().map(|s| s.friction).fold(f64::INFINITY, f64::min);

@@ -1094,7 +1094,8 @@ impl GoodmanBray {
         let (t, s, c) = (phi_deg.to_radians().tan(), self.psi_p.to_radians().sin(), self.psi_p.to_radians().cos());
         self.blocks().iter().rev().fold(0.0, |p, &(y, m, l)| {
             let w = y * self.dx;
-            let topple = if l > 0.0 { (p * (m - self.dx * t) + 0.5 * w * (y * s - self.dx * c)) / l } else { f64::NEG_INFINITY };
+            let topple =
+                if l > 0.0 { (p * (m - self.dx * t) + 0.5 * w * (y * s - self.dx * c)) / l } else { f64::NEG_INFINITY };
             let slide = p - w * (t * c - s) / (1.0 - t * t);
             topple.max(slide).max(0.0)
         })
@@ -1119,7 +1120,8 @@ impl GoodmanBray {
 }
 
 /// [`TOPPLING`]: Goodman & Bray's example, limit friction 38.151 deg (published 38.15).
-pub const TOPPLING_SET: GoodmanBray = GoodmanBray { dx: 10.0, psi_p: 30.0, a1: 5.0, a2: 5.0, b: 1.0, n_crest: 10, n_blocks: 16 };
+pub const TOPPLING_SET: GoodmanBray =
+    GoodmanBray { dx: 10.0, psi_p: 30.0, a1: 5.0, a2: 5.0, b: 1.0, n_crest: 10, n_blocks: 16 };
 /// The joints' friction angle of [`TOPPLING`] (degrees): the published limit.
 pub const TOPPLING_FRICTION_DEG: f64 = 38.15;
 /// `cdem srm` on [`TOPPLING`] against the recursion: 5 %, the bound

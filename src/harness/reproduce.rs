@@ -177,7 +177,9 @@ fn joint_sets(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Er
         }
         rep.checks.push(case.row);
     }
-    for (name, geometry) in [("plane", "verification/joints/plane-geometry.toml"), ("wedge", "verification/joints/wedge-geometry.toml")] {
+    for (name, geometry) in
+        [("plane", "verification/joints/plane-geometry.toml"), ("wedge", "verification/joints/wedge-geometry.toml")]
+    {
         let dir = rep.path(&format!("joints/{name}-kinematics"));
         let k = crate::app::kinematics::kinematics(Path::new(geometry), &dir)?;
         let _ = writeln!(rep.md, "Kinematic analysis of `{geometry}`:\n\n{}", k.table);

@@ -168,7 +168,8 @@ impl Geometry {
     /// Every value in its range, every set with a plane in the volume.
     pub fn validate(&self) -> Result<(), SceneError> {
         let bad = |key: &str, reason: &str| Err(SceneError::invalid(key, reason));
-        let positive = |key: &str, v: f64| if v.is_finite() && v > 0.0 { Ok(()) } else { bad(key, "must be finite and > 0") };
+        let positive =
+            |key: &str, v: f64| if v.is_finite() && v > 0.0 { Ok(()) } else { bad(key, "must be finite and > 0") };
         positive("mesh_size", self.mesh_size)?;
         let s = &self.slope;
         positive("slope.height", s.height)?;
@@ -345,7 +346,12 @@ impl Geometry {
             g.push_str(&s);
             g.push('\n');
         };
-        w(&mut g, format!("// Written by `cdem mesh {source}` (src/scene/joint_sets.rs): do not edit; edit the geometry file."));
+        w(
+            &mut g,
+            format!(
+                "// Written by `cdem mesh {source}` (src/scene/joint_sets.rs): do not edit; edit the geometry file."
+            ),
+        );
         w(&mut g, "// The rock volume fragmented by the joint sets' planes (gmsh's OpenCASCADE kernel).".into());
         w(&mut g, "SetFactory(\"OpenCASCADE\");".into());
         w(&mut g, "Mesh.MshFileVersion = 4.1;".into());
@@ -380,7 +386,8 @@ impl Geometry {
                 let n = pl.normal;
                 let off = dot(n, centre) - pl.d;
                 let o = [0, 1, 2].map(|d| centre[d] - off * n[d]);
-                let e1 = if (n[0].abs() + n[1].abs()) > 1e-12 { unit(cross(n, [0.0, 0.0, 1.0])) } else { [1.0, 0.0, 0.0] };
+                let e1 =
+                    if (n[0].abs() + n[1].abs()) > 1e-12 { unit(cross(n, [0.0, 0.0, 1.0])) } else { [1.0, 0.0, 0.0] };
                 let e2 = cross(n, e1);
                 w(&mut g, String::new());
                 w(&mut g, format!("// set{} plane {k}: n . p = {}", i + 1, pl.d));
@@ -394,14 +401,23 @@ impl Geometry {
                 }
                 w(&mut g, format!("Curve Loop({}) = {{{}, {}, {}, {}}};", tag + 1, tag + 1, tag + 2, tag + 3, tag + 4));
                 w(&mut g, format!("Plane Surface({}) = {{{}}};", tag + 1, tag + 1));
-                w(&mut g, format!("j{tag}[] = BooleanIntersection{{ Surface{{{}}}; Delete; }}{{ Volume{{rock}}; }};", tag + 1));
+                w(
+                    &mut g,
+                    format!(
+                        "j{tag}[] = BooleanIntersection{{ Surface{{{}}}; Delete; }}{{ Volume{{rock}}; }};",
+                        tag + 1
+                    ),
+                );
                 cut.push(format!("j{tag}[]"));
                 tag += 10;
             }
         }
         w(&mut g, String::new());
         if !cut.is_empty() {
-            w(&mut g, format!("BooleanFragments{{ Volume{{rock}}; Delete; }}{{ Surface{{{}}}; Delete; }}", cut.join(", ")));
+            w(
+                &mut g,
+                format!("BooleanFragments{{ Volume{{rock}}; Delete; }}{{ Surface{{{}}}; Delete; }}", cut.join(", ")),
+            );
         }
         let tol = 1e-7 * size;
         g.push_str(&format!(

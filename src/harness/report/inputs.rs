@@ -17,7 +17,8 @@ use std::path::Path;
 /// The committed meshes and their sources, which `meshes/regenerated`
 /// compares: every case folder under this one, and [`MESH_DIRS`].
 const CASE_DIRS: &str = "verification/cases";
-const MESH_DIRS: [&str; 4] = ["verification/extreme", "verification/study", "verification/tutorial", "verification/joints"];
+const MESH_DIRS: [&str; 4] =
+    ["verification/extreme", "verification/study", "verification/tutorial", "verification/joints"];
 
 /// Row-id prefix, and the files (relative to the repository root) its rows
 /// read besides their source. The extreme rows read

@@ -11,8 +11,8 @@ use crate::drivers::{run_srm, SrmResult};
 use crate::error::Error;
 use crate::harness::registry::{self as reg, Case, TOL_JOINTS_SRM, TOL_JOINTS_TOPPLING};
 use crate::harness::report::Check;
-use crate::model::Model;
 use crate::harness::suite::srm::BRACKET_WIDTH;
+use crate::model::Model;
 use crate::EndState;
 
 /// One case: the reduction, the closed form, the mesh size and the row.

@@ -40,7 +40,10 @@ pub fn stereonet(
     let (title, body) = root.split_vertically(80);
     title
         .draw(&Text::new(
-            format!("lower hemisphere, equal area; face {:.0}/{:03.0}, friction {:.0} deg", face.dip, face.dip_direction, friction),
+            format!(
+                "lower hemisphere, equal area; face {:.0}/{:03.0}, friction {:.0} deg",
+                face.dip, face.dip_direction, friction
+            ),
             (20, 15),
             ("sans-serif", 24).into_font(),
         ))
@@ -53,14 +56,19 @@ pub fn stereonet(
         ))
         .map_err(e)?;
     let mut chart = ChartBuilder::on(&body).margin(30).build_cartesian_2d(-1.12..1.12, -1.12..1.12).map_err(e)?;
-    let net = |pts: Vec<(f64, f64)>| pts.into_iter().map(|(x, y)| (x, y)).collect::<Vec<_>>();
     // The primitive circle and the cardinal ticks.
-    chart.draw_series(std::iter::once(PathElement::new(net(small_circle(0.0, 360)), BLACK.stroke_width(2)))).map_err(e)?;
+    chart.draw_series(std::iter::once(PathElement::new(small_circle(0.0, 360), BLACK.stroke_width(2)))).map_err(e)?;
     for (label, t) in [("N", 0.0), ("E", 90.0), ("S", 180.0), ("W", 270.0)] {
         let (x, y) = equal_area(Line { plunge: 0.0, trend: t });
-        chart.draw_series(std::iter::once(PathElement::new(vec![(x, y), (1.04 * x, 1.04 * y)], BLACK.stroke_width(2)))).map_err(e)?;
         chart
-            .draw_series(std::iter::once(Text::new(label.to_string(), (1.08 * x - 0.02, 1.08 * y + 0.03), ("sans-serif", 22).into_font())))
+            .draw_series(std::iter::once(PathElement::new(vec![(x, y), (1.04 * x, 1.04 * y)], BLACK.stroke_width(2))))
+            .map_err(e)?;
+        chart
+            .draw_series(std::iter::once(Text::new(
+                label.to_string(),
+                (1.08 * x - 0.02, 1.08 * y + 0.03),
+                ("sans-serif", 22).into_font(),
+            )))
             .map_err(e)?;
     }
     // The wedge critical zone: lines that daylight (outside the face's great
@@ -78,20 +86,20 @@ pub fn stereonet(
             zone.push(equal_area(Line { plunge, trend }));
         }
     }
-    chart
-        .draw_series(zone.iter().map(|&p| Circle::new(p, 2, RGBColor(255, 200, 200).filled())))
-        .map_err(e)?;
+    chart.draw_series(zone.iter().map(|&p| Circle::new(p, 2, RGBColor(255, 200, 200).filled()))).map_err(e)?;
     // The friction circle, dashed.
     let fc = small_circle(friction, 180);
     chart
-        .draw_series(fc.chunks(2).step_by(2).map(|c| PathElement::new(c.to_vec(), RGBColor(214, 39, 40).stroke_width(2))))
+        .draw_series(
+            fc.chunks(2).step_by(2).map(|c| PathElement::new(c.to_vec(), RGBColor(214, 39, 40).stroke_width(2))),
+        )
         .map_err(e)?;
     // The face.
-    chart.draw_series(std::iter::once(PathElement::new(net(great_circle(face, 180)), BLACK.stroke_width(3)))).map_err(e)?;
+    chart.draw_series(std::iter::once(PathElement::new(great_circle(face, 180), BLACK.stroke_width(3)))).map_err(e)?;
     // The sets.
     for (k, (label, o)) in sets.iter().enumerate() {
         let c = COLOURS[k % COLOURS.len()];
-        chart.draw_series(std::iter::once(PathElement::new(net(great_circle(*o, 180)), c.stroke_width(2)))).map_err(e)?;
+        chart.draw_series(std::iter::once(PathElement::new(great_circle(*o, 180), c.stroke_width(2)))).map_err(e)?;
         let p = equal_area(o.pole());
         chart.draw_series(std::iter::once(Circle::new(p, 7, c.filled()))).map_err(e)?;
         chart
