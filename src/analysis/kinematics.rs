@@ -162,12 +162,19 @@ pub fn equal_area(l: Line) -> (f64, f64) {
     (r * t.sin(), r * t.cos())
 }
 
-/// A plane's great circle: the projections of its lines from strike to strike.
+/// A plane's great circle: the projections of its lines `cos(a) s + sin(a) d`
+/// for `a` from 0 to 180 deg (`s` along strike, `d` down the dip), so that a
+/// vertical plane's is a diameter.
 pub fn great_circle(o: Orientation, n: usize) -> Vec<(f64, f64)> {
+    let (dip, dd) = (o.dip.to_radians(), o.dip_direction.to_radians());
+    let s = [(dd - std::f64::consts::FRAC_PI_2).sin(), (dd - std::f64::consts::FRAC_PI_2).cos(), 0.0];
+    let d = [dip.cos() * dd.sin(), dip.cos() * dd.cos(), -dip.sin()];
     (0..=n)
         .map(|k| {
-            let t = o.dip_direction - 90.0 + 180.0 * k as f64 / n as f64;
-            equal_area(Line { plunge: o.apparent_dip(t).max(0.0), trend: t })
+            let a = std::f64::consts::PI * k as f64 / n as f64;
+            let v = [0, 1, 2].map(|i| a.cos() * s[i] + a.sin() * d[i]);
+            let plunge = (-v[2]).clamp(-1.0, 1.0).asin().to_degrees().max(0.0);
+            equal_area(Line { plunge, trend: v[0].atan2(v[1]).to_degrees() })
         })
         .collect()
 }

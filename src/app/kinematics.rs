@@ -102,7 +102,10 @@ pub fn kinematics(path: &Path, out: &Path) -> crate::Result<Kinematics> {
         .map_err(|e| Error::io(&md, e))?;
     let labelled: Vec<(String, Orientation)> =
         sets.iter().enumerate().map(|(i, s)| (format!("set{}", i + 1), s.orientation)).collect();
-    let friction = sets.iter().map(|s| s.friction).fold(f64::INFINITY, f64::min);
+    // The figure's friction circle and cone: the largest friction angle of
+    // the sets (a set without friction, like an open tension crack, would put
+    // them on the rim and at the centre); the table uses each set's own.
+    let friction = sets.iter().map(|s| s.friction).fold(f64::NEG_INFINITY, f64::max);
     let friction = if friction.is_finite() { friction } else { 30.0 };
     stereonet(&out.join("stereonet.png"), face, &labelled, friction, &pairs)?;
     Ok(Kinematics { face, sets, singles, pairs, table })

@@ -5,7 +5,8 @@
 //! circle bounds the lines that daylight: the critical zone for wedges lies
 //! between it and the friction circle, shaded), each set's great circle and
 //! pole (coloured, labelled), and the sets' lines of intersection (crosses,
-//! filled where the pair passes the wedge test).
+//! red where the pair passes the wedge test); for plane sliding, the poles'
+//! friction cone and daylight envelope (dotted grey).
 
 use std::path::Path;
 
@@ -50,8 +51,15 @@ pub fn stereonet(
         .map_err(e)?;
     title
         .draw(&Text::new(
-            "black: face; red dashed: friction circle; shaded: wedge critical zone; dots: poles; x: intersections",
-            (20, 50),
+            "black: face; red dashed: friction circle; shaded: wedge critical zone; x: intersections;",
+            (20, 46),
+            ("sans-serif", 16).into_font(),
+        ))
+        .map_err(e)?;
+    title
+        .draw(&Text::new(
+            "dots: poles; grey dotted: the poles' friction cone and daylight envelope (plane sliding)",
+            (20, 64),
             ("sans-serif", 16).into_font(),
         ))
         .map_err(e)?;
@@ -94,6 +102,22 @@ pub fn stereonet(
             fc.chunks(2).step_by(2).map(|c| PathElement::new(c.to_vec(), RGBColor(214, 39, 40).stroke_width(2))),
         )
         .map_err(e)?;
+    // For planar sliding, on the poles: the friction cone (poles of planes
+    // dipping phi: plunge 90 - phi) and the daylight envelope (poles of the
+    // planes dipping at the face's apparent dip in their dip direction),
+    // dotted grey; a plane can slide when its pole lies inside the envelope and
+    // outside the cone.
+    let grey = RGBColor(110, 110, 110);
+    let cone = small_circle(90.0 - friction, 180);
+    chart.draw_series(cone.iter().step_by(3).map(|&p| Circle::new(p, 2, grey.filled()))).map_err(e)?;
+    let envelope: Vec<(f64, f64)> = (0..=180)
+        .filter_map(|k| {
+            let t = face.dip_direction - 90.0 + k as f64;
+            let app = face.apparent_dip(t);
+            (app > 0.0).then(|| equal_area(Line { plunge: 90.0 - app, trend: t + 180.0 }))
+        })
+        .collect();
+    chart.draw_series(envelope.iter().step_by(2).map(|&p| Circle::new(p, 2, grey.filled()))).map_err(e)?;
     // The face.
     chart.draw_series(std::iter::once(PathElement::new(great_circle(face, 180), BLACK.stroke_width(3)))).map_err(e)?;
     // The sets.
@@ -102,10 +126,12 @@ pub fn stereonet(
         chart.draw_series(std::iter::once(PathElement::new(great_circle(*o, 180), c.stroke_width(2)))).map_err(e)?;
         let p = equal_area(o.pole());
         chart.draw_series(std::iter::once(Circle::new(p, 7, c.filled()))).map_err(e)?;
+        // Labels above right of the pole, or below left of it near the east rim.
+        let at = if p.0 > 0.55 { (p.0 - 0.42, p.1 - 0.03) } else { (p.0 + 0.03, p.1 + 0.06) };
         chart
             .draw_series(std::iter::once(Text::new(
                 format!("{label} {:.0}/{:03.0}", o.dip, o.dip_direction),
-                (p.0 + 0.03, p.1 + 0.06),
+                at,
                 ("sans-serif", 18).into_font().color(&c),
             )))
             .map_err(e)?;
@@ -119,7 +145,7 @@ pub fn stereonet(
         chart.draw_series(std::iter::once(PathElement::new(vec![(x - d, y + d), (x + d, y - d)], style))).map_err(e)?;
         chart
             .draw_series(std::iter::once(Text::new(
-                format!("I{}{} {:.0}->{:03.0}", pr.sets.0 + 1, pr.sets.1 + 1, l.plunge, l.trend),
+                format!("I{}{} {:.0}->{:03.0}", pr.sets.0 + 1, pr.sets.1 + 1, l.plunge.abs(), l.trend),
                 (x + 0.03, y - 0.02),
                 ("sans-serif", 16).into_font(),
             )))
