@@ -232,7 +232,14 @@ def cases():
         "FS_vector": vec["FS"], "W": vec["W"], "volume": vec["volume"],
         "plunge": vec["plunge"], "trend": vec["trend"],
     }
-    # 2b. Hoek & Bray's general wedge (planes 45/105, 70/235, upper surface
+    # 2b. The general wedge of verification/joints/wedge-general-geometry.toml:
+    # planes 50/230 (c 10 kPa, phi 30) and 65/320 (c 10 kPa, phi 35), face
+    # 70/270, horizontal top, H = 12 m, rho = 2600 kg/m^3.
+    out["wedge_general"] = wedge_vector(
+        [(50.0, 230.0), (65.0, 320.0), (0.0, 270.0), (70.0, 270.0)], H=12.0, gamma=2600.0 * 9.81,
+        strengths=[(10.0e3, 30.0), (10.0e3, 35.0)],
+    )
+    # 2c. Hoek & Bray's general wedge (planes 45/105, 70/235, upper surface
     # 12/195, face 65/185; H = 40 m, gamma = 25 kN/m^3; c_A = 24 kPa,
     # phi_A = 20, c_B = 48 kPa, phi_B = 30), dry, no tension crack. The
     # published factor of safety was not found (references/joints.md).
@@ -270,6 +277,12 @@ def main():
         f"symmetric wedge: psi_i = {w['psi_i']:.4f}, trend {w['trend']:.2f}, xi = {w['xi']:.4f}, "
         f"beta = {w['beta']:.4f}, K = {w['K']:.5f}, FS (wedge factor) = {w['FS_wedge_factor']:.5f}, "
         f"FS (vector) = {w['FS_vector']:.5f}, W = {w['W']:.1f} N, V = {w['volume']:.2f} m^3"
+    )
+    v = out["wedge_general"]
+    print(
+        f"general wedge: intersection {v['plunge']:.2f} -> {v['trend']:.2f}, V = {v['volume']:.3f} m^3, "
+        f"W = {v['W']:.1f} N, A1 = {v['A1']:.3f}, A2 = {v['A2']:.3f} m^2, N1 = {v['N1']:.1f}, N2 = {v['N2']:.1f} N, "
+        f"FS = {v['FS']:.6f}"
     )
     g = out["wedge_hoek_bray"]
     print(

@@ -3,6 +3,7 @@
 //! GEOMETRY.toml`; tests/gmsh_regen.rs checks the `.msh` against the `.geo`),
 //! bad geometry is a typed error naming its key, and `cdem srm` on the plane
 //! failure and the symmetric wedge lands within 1 % of the closed forms, on
+//! the general wedge within 3 % of the vector solution, on
 //! Goodman & Bray's toppling within 5 % of their recursion (the
 //! runs and rows are [`cdem::harness::suite::joints`], shared with
 //! `cdem reproduce`).
@@ -20,7 +21,11 @@ fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
-const GEOMETRIES: [&str; 2] = ["verification/joints/plane-geometry.toml", "verification/joints/wedge-geometry.toml"];
+const GEOMETRIES: [&str; 3] = [
+    "verification/joints/plane-geometry.toml",
+    "verification/joints/wedge-geometry.toml",
+    "verification/joints/wedge-general-geometry.toml",
+];
 
 /// The closed forms of the registry against the numbers of the independent
 /// script (`python3 scripts/rock_slope_closed_forms.py`, references/joints.md).
@@ -36,6 +41,22 @@ fn the_registry_closed_forms_equal_the_reference_script() {
     // wedge factor equals the script's vector solution, 1.43530.
     let hb = reg::WedgeFactor { plane_a: (45.0, 105.0), plane_b: (70.0, 235.0), friction_deg: 30.0 };
     assert!((hb.fs() - 1.43530).abs() < 1e-5, "{}", hb.fs());
+    // The general wedge: the script's vector solution.
+    let (w, a1, a2, n1, n2, fs) = reg::WEDGE_GENERAL_SET.solve();
+    assert!(
+        (w - 4993458.234).abs() < 1e-2 && (a1 - 84.597).abs() < 1e-3 && (a2 - 59.999).abs() < 1e-3,
+        "{w} {a1} {a2}"
+    );
+    assert!((n1 - 2846515.708).abs() < 1e-2 && (n2 - 1337059.880).abs() < 1e-2, "{n1} {n2}");
+    assert!((fs - 1.117519).abs() < 1e-6, "{fs}");
+    // With the symmetric wedge's planes and friction, the vector solution is the wedge factor's.
+    let sym = reg::VectorWedge {
+        planes: [(55.0, 215.0), (55.0, 325.0), (0.0, 270.0), (75.0, 270.0)],
+        height: 12.0,
+        unit_weight: 2600.0 * 9.81,
+        strengths: [(0.0, 35.0), (0.0, 35.0)],
+    };
+    assert!((sym.fs() - reg::WEDGE_SYMMETRIC_SET.fs()).abs() < 1e-12);
     // Goodman & Bray: heights 4, 8, ..., 40, 34, ..., 4 m; the limit friction
     // angle 38.1512 deg (the script; published 38.15).
     let heights: Vec<f64> = reg::TOPPLING_SET.blocks().iter().map(|b| b.0).collect();
@@ -146,6 +167,11 @@ fn symmetric_wedge_srm_matches_the_wedge_factor() {
 }
 
 #[test]
+fn general_wedge_srm_matches_the_vector_solution() {
+    run_case(2, "joints-wedge-general");
+}
+
+#[test]
 fn block_toppling_srm_matches_goodman_and_bray() {
-    run_case(2, "joints-toppling");
+    run_case(3, "joints-toppling");
 }

@@ -253,6 +253,14 @@ pub const WEDGE_SYMMETRIC: Case = Case {
     source: JOINTS_MD,
 };
 
+/// A general (asymmetric) wedge with cohesion (3D), from joint sets.
+pub const WEDGE_GENERAL: Case = Case {
+    name: "general wedge with cohesion (vector solution)",
+    input: "verification/joints/wedge-general.toml",
+    checks: "`cdem srm` FS against the wedge's vector solution within 3 % (tests/joints.rs)",
+    source: JOINTS_MD,
+};
+
 /// Goodman & Bray's block toppling example (16 blocks on a stepped base).
 pub const TOPPLING: Case = Case {
     name: "block toppling (Goodman & Bray 1976)",
@@ -262,7 +270,7 @@ pub const TOPPLING: Case = Case {
 };
 
 /// Every case above (the extreme suite is [`extreme_cases`]).
-pub const CASES: [Case; 16] = [
+pub const CASES: [Case; 17] = [
     COLUMN,
     COLUMN_MERGED,
     SLOPE,
@@ -278,6 +286,7 @@ pub const CASES: [Case; 16] = [
     COLUMN_CIRCLE,
     PLANE_FAILURE,
     WEDGE_SYMMETRIC,
+    WEDGE_GENERAL,
     TOPPLING,
 ];
 
@@ -905,6 +914,7 @@ pub const ROWS: &[RowSpec] = &[
     // Joint sets: the rock-slope mechanisms against their closed forms (tests/joints.rs).
     spec("joints/plane-srm", "plane failure, dry tension crack (Hoek & Bray)", "FS (strength reduction) vs closed form", Asserted(TOL_JOINTS_SRM), JOINTS_MD, "tests/joints.rs"),
     spec("joints/wedge-srm", "symmetric wedge, 3D (Hoek & Bray wedge factor)", "FS (strength reduction) vs closed form", Asserted(TOL_JOINTS_SRM), JOINTS_MD, "tests/joints.rs"),
+    spec("joints/wedge-general-srm", "general wedge with cohesion, 3D (vector solution)", "FS (strength reduction) vs closed form", Asserted(TOL_JOINTS_WEDGE_GENERAL), JOINTS_MD, "tests/joints.rs"),
     spec("joints/toppling-srm", "block toppling, 16 blocks (Goodman & Bray 1976)", "FS (strength reduction) vs the Goodman-Bray recursion", Asserted(TOL_JOINTS_TOPPLING), JOINTS_MD, "tests/joints.rs"),
     // Eq. 21 on any circle, `[analysis]` (tests/surface_analysis.rs).
     spec("analysis/column/cdem-vs-analytic", "column, circle (-1.5, 26) r 5", "eq. 21 K from CDEM element stresses vs closed form", Asserted(TOL_EQ21_ANALYTIC), ANALYSIS_MD, "tests/surface_analysis.rs").with_reference(COLUMN_CIRCLE_K.value),
@@ -1053,6 +1063,86 @@ pub const WEDGE_SYMMETRIC_SET: WedgeFactor =
 /// inside it at FS 1.15; the rest is the mesh (references/joints.md: measured
 /// 0.29 % plane, 0.07 % wedge). The issue asked for 3 %.
 pub const TOL_JOINTS_SRM: f64 = 0.01;
+
+/// A tetrahedral wedge (Hoek & Bray ch. 8, the vector solution): joint planes
+/// 1 and 2, the upper surface and the face, each `(dip, dip direction)` in
+/// degrees, the lowest vertex O (where the line of intersection meets the
+/// face) at the origin, the upper surface through `(0, 0, height)`; the
+/// joints' `(c in Pa, phi in degrees)`; `unit_weight` in N/m^3.
+#[derive(Debug, Clone, Copy)]
+pub struct VectorWedge {
+    pub planes: [(f64, f64); 4],
+    pub height: f64,
+    pub unit_weight: f64,
+    pub strengths: [(f64, f64); 2],
+}
+
+impl VectorWedge {
+    fn normal((dip, dd): (f64, f64)) -> [f64; 3] {
+        let (d, a) = (dip.to_radians(), dd.to_radians());
+        [d.sin() * a.sin(), d.sin() * a.cos(), d.cos()]
+    }
+    /// The point on three planes `n_k . p = d_k` (Cramer's rule).
+    fn meet(n: [[f64; 3]; 3], d: [f64; 3]) -> [f64; 3] {
+        let det = |m: [[f64; 3]; 3]| {
+            m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+                + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+        };
+        let d0 = det(n);
+        [0, 1, 2].map(|k| {
+            let mut m = n;
+            for i in 0..3 {
+                m[i][k] = d[i];
+            }
+            det(m) / d0
+        })
+    }
+    /// `(W, A_1, A_2, N_1, N_2, FS)`: the weight `gamma V` of the tetrahedron
+    /// O, A (planes 1, top, face), B (2, top, face), P (1, 2, top); the areas
+    /// of its faces on the joints; the normal reactions from equilibrium
+    /// normal to the line of intersection `i`,
+    /// `N_1 + N_2 (n_1 . n_2) = W n_1z`, `N_1 (n_1 . n_2) + N_2 = W n_2z`; and
+    /// `FS = (c_1 A_1 + c_2 A_2 + N_1 tan(phi_1) + N_2 tan(phi_2)) / (W sin(psi_i))`.
+    pub fn solve(&self) -> (f64, f64, f64, f64, f64, f64) {
+        let [n1, n2, n3, n4] = self.planes.map(Self::normal);
+        let cross = |a: [f64; 3], b: [f64; 3]| {
+            [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+        };
+        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let norm = |a: [f64; 3]| dot(a, a).sqrt();
+        let d3 = n3[2] * self.height;
+        let a = Self::meet([n1, n3, n4], [0.0, d3, 0.0]);
+        let b = Self::meet([n2, n3, n4], [0.0, d3, 0.0]);
+        let p = Self::meet([n1, n2, n3], [0.0, 0.0, d3]);
+        let volume = dot(a, cross(b, p)).abs() / 6.0;
+        let (area1, area2) = (0.5 * norm(cross(a, p)), 0.5 * norm(cross(b, p)));
+        let w = self.unit_weight * volume;
+        let c12 = dot(n1, n2);
+        let (big_n1, big_n2) =
+            (w * (n1[2] - c12 * n2[2]) / (1.0 - c12 * c12), w * (n2[2] - c12 * n1[2]) / (1.0 - c12 * c12));
+        let i = cross(n1, n2);
+        let sin_psi = i[2].abs() / norm(i);
+        let [(c1, f1), (c2, f2)] = self.strengths;
+        let resist = c1 * area1 + c2 * area2 + big_n1 * f1.to_radians().tan() + big_n2 * f2.to_radians().tan();
+        (w, area1, area2, big_n1, big_n2, resist / (w * sin_psi))
+    }
+    pub fn fs(&self) -> f64 {
+        self.solve().5
+    }
+}
+
+/// [`WEDGE_GENERAL`]: planes 50/230 (c 10 kPa, phi 30) and 65/320 (c 10 kPa, phi 35), top
+/// 0/270, face 70/270, H = 12 m, rho = 2600 kg/m^3: FS = 1.1175.
+pub const WEDGE_GENERAL_SET: VectorWedge = VectorWedge {
+    planes: [(50.0, 230.0), (65.0, 320.0), (0.0, 270.0), (70.0, 270.0)],
+    height: 12.0,
+    unit_weight: 2600.0 * GRAVITY,
+    strengths: [(10.0e3, 30.0), (10.0e3, 35.0)],
+};
+/// `cdem srm` on [`WEDGE_GENERAL`] against the vector solution: 3 %, the
+/// issue's bound (references/joints.md: measured +1.0 %, ours high, the same
+/// on a 6x finer mesh).
+pub const TOL_JOINTS_WEDGE_GENERAL: f64 = 0.03;
 
 /// Block toppling on a stepped base (Goodman & Bray 1976; Hoek & Bray ch. 9):
 /// blocks `dx` wide on a base dipping `psi_p` (degrees), heights

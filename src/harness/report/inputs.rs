@@ -43,6 +43,7 @@ pub const DECLARED: &[(&str, &[&str])] = &[
     ("srm/block-cohesion", &["verification/cases/block-srm/block-srm-cohesion.toml"]),
     ("joints/plane-srm", &["verification/joints/plane.toml", "verification/joints/plane-geometry.toml"]),
     ("joints/wedge-srm", &["verification/joints/wedge.toml", "verification/joints/wedge-geometry.toml"]),
+    ("joints/wedge-general-srm", &["verification/joints/wedge-general.toml", "verification/joints/wedge-general-geometry.toml"]),
     ("joints/toppling-srm", &["verification/joints/toppling.toml"]),
     ("analysis/column/", &["verification/analysis/column-circle.toml"]),
     ("analysis/slope/", &["verification/cases/slope/slope.toml"]),

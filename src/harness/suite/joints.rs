@@ -3,13 +3,14 @@
 //! factor of safety by strength reduction (`cdem srm`) against the closed
 //! forms: Hoek & Bray's plane failure with a dry tension crack (row
 //! `joints/plane-srm`) and a symmetric wedge by the wedge factor (row
-//! `joints/wedge-srm`, 3D), and Goodman & Bray's block toppling by their
+//! `joints/wedge-srm`, 3D), a general wedge with cohesion by the vector
+//! solution (row `joints/wedge-general-srm`), and Goodman & Bray's block toppling by their
 //! limit-equilibrium recursion (row `joints/toppling-srm`; its mesh is a
 //! hand-written `.geo`: the stepped base is not persistent joint sets).
 
 use crate::drivers::{run_srm, SrmResult};
 use crate::error::Error;
-use crate::harness::registry::{self as reg, Case, TOL_JOINTS_SRM, TOL_JOINTS_TOPPLING};
+use crate::harness::registry::{self as reg, Case, TOL_JOINTS_SRM, TOL_JOINTS_TOPPLING, TOL_JOINTS_WEDGE_GENERAL};
 use crate::harness::report::Check;
 use crate::harness::suite::srm::BRACKET_WIDTH;
 use crate::model::Model;
@@ -28,20 +29,21 @@ pub struct JointRun {
 }
 
 /// The cases: (case, closed-form FS, row id).
-pub fn cases() -> [(Case, f64, &'static str); 3] {
+pub fn cases() -> [(Case, f64, &'static str); 4] {
     [
         (reg::PLANE_FAILURE, reg::PLANE_FAILURE_SET.fs(), "joints/plane-srm"),
         (reg::WEDGE_SYMMETRIC, reg::WEDGE_SYMMETRIC_SET.fs(), "joints/wedge-srm"),
+        (reg::WEDGE_GENERAL, reg::WEDGE_GENERAL_SET.fs(), "joints/wedge-general-srm"),
         (reg::TOPPLING, reg::TOPPLING_SET.fs(reg::TOPPLING_FRICTION_DEG), "joints/toppling-srm"),
     ]
 }
 
 /// The tolerance of row `id`.
 fn tolerance(id: &str) -> f64 {
-    if id == "joints/toppling-srm" {
-        TOL_JOINTS_TOPPLING
-    } else {
-        TOL_JOINTS_SRM
+    match id {
+        "joints/toppling-srm" => TOL_JOINTS_TOPPLING,
+        "joints/wedge-general-srm" => TOL_JOINTS_WEDGE_GENERAL,
+        _ => TOL_JOINTS_SRM,
     }
 }
 
