@@ -175,3 +175,32 @@ fn general_wedge_srm_matches_the_vector_solution() {
 fn block_toppling_srm_matches_goodman_and_bray() {
     run_case(3, "joints-toppling");
 }
+
+/// The command line: a bad geometry file is exit code 2 naming the key, for
+/// `cdem mesh` and `cdem kinematics` alike; `cdem kinematics` prints the table.
+#[test]
+fn the_commands_exit_2_on_bad_geometry_and_print_the_table() {
+    let dir = std::env::temp_dir().join(format!("cdem-joints-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let text = std::fs::read_to_string(root().join(GEOMETRIES[0])).unwrap();
+    let bad = dir.join("bad-geometry.toml");
+    std::fs::write(&bad, text.replacen("face_dip = 60.0", "face_dip = 100.0", 1)).unwrap();
+    for command in ["mesh", "kinematics"] {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_cdem"))
+            .args([command, bad.to_str().unwrap(), "--out", dir.join("out").to_str().unwrap()])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{command}: {stderr}");
+        assert!(stderr.contains("slope.face_dip"), "{command}: {stderr}");
+    }
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_cdem"))
+        .args(["kinematics", root().join(GEOMETRIES[1]).to_str().unwrap(), "--out", dir.join("kin").to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        String::from_utf8_lossy(&out.stdout).contains("| set1 x set2 | 39.32 -> 270.00 | 75.00 | 35.0 | possible |")
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
