@@ -6,6 +6,7 @@
 
 pub mod arc;
 pub mod compare;
+pub mod kinematics;
 pub mod safety;
 pub mod slip;
 pub mod stats;

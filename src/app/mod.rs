@@ -6,6 +6,7 @@
 //! printing; the verification harness sits above this layer.
 
 pub mod ensemble;
+pub mod kinematics;
 
 use std::path::{Path, PathBuf};
 

@@ -46,12 +46,22 @@ enum Command {
         #[arg(long, default_value = "out-srm")]
         out: PathBuf,
     },
-    /// Regenerate a case's .msh from its .geo with gmsh (gmsh must be on PATH).
+    /// Regenerate a case's .msh from its .geo with gmsh (gmsh must be on PATH); or, given a
+    /// geometry file (.toml: a slope and its [[joint_set]]s), write DIR/NAME.geo, .msh and a
+    /// scene skeleton NAME.toml.
     Mesh {
         geo: PathBuf,
-        /// Output mesh (default: the .geo's path with extension .msh).
+        /// Output mesh (default: the .geo's path with extension .msh); for a geometry file, the
+        /// output directory (default: the geometry file's).
         #[arg(long)]
         out: Option<PathBuf>,
+    },
+    /// Kinematic analysis of a geometry file's joint sets on its slope face (Markland / Hoek-Bray:
+    /// plane sliding, wedge sliding, flexural toppling): DIR/kinematics.md and stereonet.png.
+    Kinematics {
+        geometry: PathBuf,
+        #[arg(long, default_value = "out-kinematics")]
+        out: PathBuf,
     },
     /// Solve the scene with the implicit FEM reference (continuous mesh); write summary.json and VTK.
     Fem {
@@ -264,10 +274,23 @@ fn main() -> ExitCode {
         Command::Run { scene, out } => run(&scene, &out),
         Command::Fem { scene, out } => fem(&scene, &out),
         Command::Srm { scene, out } => srm(&scene, &out),
+        Command::Mesh { geo, out } if geo.extension().is_some_and(|e| e == "toml") => {
+            let dir = out.unwrap_or_else(|| geo.parent().map(PathBuf::from).unwrap_or_default());
+            reached(cdem::scene::joint_sets::mesh_geometry(&geo, &dir).map(|m| {
+                for p in [&m.geo, &m.msh, &m.scene] {
+                    eprintln!("wrote {}", p.display());
+                }
+            }))
+        }
         Command::Mesh { geo, out } => {
             let out = out.unwrap_or_else(|| geo.with_extension("msh"));
             reached(cdem::mesh::gmsh::regenerate(&geo, &out).map(|_| eprintln!("wrote {}", out.display())))
         }
+        Command::Kinematics { geometry, out } => reached(cdem::app::kinematics::kinematics(&geometry, &out).map(|k| {
+            print!("{}", k.table);
+            eprintln!("wrote {}", out.join("kinematics.md").display());
+            eprintln!("wrote {}", out.join("stereonet.png").display());
+        })),
         Command::Lem { input, out } => reached(lem(&input, out.as_deref())),
         Command::Ensemble(args) => reached(ensemble(args)),
         Command::Study { out } => {

@@ -60,6 +60,8 @@ pub const ENSEMBLE_MD: &str = "references/ensemble.md";
 pub const ANALYSIS_MD: &str = "references/analysis.md";
 /// The Wulong landslide: the paper's and ours.
 pub const WULONG_MD: &str = "references/wulong.md";
+/// Joint sets: plane, wedge and toppling failure against their closed forms.
+pub const JOINTS_MD: &str = "references/joints.md";
 /// The performance goals and measurements.
 pub const PERFORMANCE_MD: &str = "references/performance.md";
 /// pySlope's Bishop FS on our critical circles (read by tests/lem.rs).
@@ -237,8 +239,40 @@ pub const COLUMN_CIRCLE: Case = Case {
     source: ANALYSIS_MD,
 };
 
+/// Plane failure with a dry tension crack (Hoek & Bray), from joint sets.
+pub const PLANE_FAILURE: Case = Case {
+    name: "plane failure, dry tension crack (Hoek & Bray)",
+    input: "verification/joints/plane.toml",
+    checks: "`cdem srm` FS against Hoek & Bray's closed form within 1 % (tests/joints.rs)",
+    source: JOINTS_MD,
+};
+
+/// A symmetric wedge (3D), from joint sets.
+pub const WEDGE_SYMMETRIC: Case = Case {
+    name: "symmetric wedge (Hoek & Bray wedge factor)",
+    input: "verification/joints/wedge.toml",
+    checks: "`cdem srm` FS against the wedge factor's closed form within 1 % (tests/joints.rs)",
+    source: JOINTS_MD,
+};
+
+/// A general (asymmetric) wedge with cohesion (3D), from joint sets.
+pub const WEDGE_GENERAL: Case = Case {
+    name: "general wedge with cohesion (vector solution)",
+    input: "verification/joints/wedge-general.toml",
+    checks: "`cdem srm` FS against the wedge's vector solution within 3 % (tests/joints.rs)",
+    source: JOINTS_MD,
+};
+
+/// Goodman & Bray's block toppling example (16 blocks on a stepped base).
+pub const TOPPLING: Case = Case {
+    name: "block toppling (Goodman & Bray 1976)",
+    input: "verification/joints/toppling.toml",
+    checks: "`cdem srm` FS against the Goodman-Bray recursion within 5 % (tests/joints.rs)",
+    source: JOINTS_MD,
+};
+
 /// Every case above (the extreme suite is [`extreme_cases`]).
-pub const CASES: [Case; 13] = [
+pub const CASES: [Case; 17] = [
     COLUMN,
     COLUMN_MERGED,
     SLOPE,
@@ -252,6 +286,10 @@ pub const CASES: [Case; 13] = [
     BLOCK_SRM_FRICTION,
     BLOCK_SRM_COHESION,
     COLUMN_CIRCLE,
+    PLANE_FAILURE,
+    WEDGE_SYMMETRIC,
+    WEDGE_GENERAL,
+    TOPPLING,
 ];
 
 // ---------------------------------------------------------------------------
@@ -877,6 +915,11 @@ pub const ROWS: &[RowSpec] = &[
     spec("srm/block-cohesion", "SRM block on plane, theta 25, phi 20, c 5 kPa", "FS (strength reduction)", Asserted(TOL_SRM_BLOCK), SRM_MD, "tests/srm.rs"),
     // The plastic blocks' Mohr-Coulomb limit (tests/plasticity.rs).
     spec("plastic/element-limit", "one plastic hexahedron, plane-strain compression, c 100 kPa, phi 30, sigma_3 0 / 100 kPa / 1 MPa", "axial stress at the limit vs sigma_3 N_phi + 2 c sqrt(N_phi) (largest error)", Asserted(TOL_PLASTIC_ELEMENT), PLASTIC_MD, "tests/plasticity.rs").with_reference(0.0),
+    // Joint sets: the rock-slope mechanisms against their closed forms (tests/joints.rs).
+    spec("joints/plane-srm", "plane failure, dry tension crack (Hoek & Bray)", "FS (strength reduction) vs closed form", Asserted(TOL_JOINTS_SRM), JOINTS_MD, "tests/joints.rs"),
+    spec("joints/wedge-srm", "symmetric wedge, 3D (Hoek & Bray wedge factor)", "FS (strength reduction) vs closed form", Asserted(TOL_JOINTS_SRM), JOINTS_MD, "tests/joints.rs"),
+    spec("joints/wedge-general-srm", "general wedge with cohesion, 3D (vector solution)", "FS (strength reduction) vs closed form", Asserted(TOL_JOINTS_WEDGE_GENERAL), JOINTS_MD, "tests/joints.rs"),
+    spec("joints/toppling-srm", "block toppling, 16 blocks (Goodman & Bray 1976)", "FS (strength reduction) vs the Goodman-Bray recursion", Asserted(TOL_JOINTS_TOPPLING), JOINTS_MD, "tests/joints.rs"),
     // Eq. 21 on any circle, `[analysis]` (tests/surface_analysis.rs).
     spec("analysis/column/cdem-vs-analytic", "column, circle (-1.5, 26) r 5", "eq. 21 K from CDEM element stresses vs closed form", Asserted(TOL_EQ21_ANALYTIC), ANALYSIS_MD, "tests/surface_analysis.rs").with_reference(COLUMN_CIRCLE_K.value),
     spec("analysis/column/fem-vs-analytic", "column, circle (-1.5, 26) r 5", "eq. 21 K from FEM cell stresses vs closed form", Asserted(TOL_EQ21_ANALYTIC), ANALYSIS_MD, "tests/surface_analysis.rs").with_reference(COLUMN_CIRCLE_K.value),
@@ -925,6 +968,260 @@ pub fn rows() -> Vec<RowSpec> {
 pub fn row(id: &str) -> RowSpec {
     rows().into_iter().find(|r| r.id == id).unwrap_or_else(|| panic!("no row {id:?} in registry::ROWS"))
 }
+
+// ---------------------------------------------------------------------------
+// Joint sets: the closed forms of the rock-slope mechanisms (references/joints.md;
+// scripts/rock_slope_closed_forms.py computes the same numbers independently).
+
+/// Plane failure with a dry tension crack in the upper slope surface (Hoek &
+/// Bray, Rock Slope Engineering, ch. 7): the slope `height` H, the face and the
+/// sliding plane (through the toe) dipping `face_dip` and `plane_dip`, the
+/// crack vertical, `crack_behind_crest` b behind the crest.
+#[derive(Debug, Clone, Copy)]
+pub struct PlaneFailure {
+    pub height: f64,
+    pub face_dip: f64,
+    pub plane_dip: f64,
+    /// Pa.
+    pub cohesion: f64,
+    pub friction_deg: f64,
+    /// N/m^3.
+    pub unit_weight: f64,
+    pub crack_behind_crest: f64,
+}
+
+impl PlaneFailure {
+    /// The crack depth `z = H - (H cot(psi_f) + b) tan(psi_p)` (m).
+    pub fn crack_depth(&self) -> f64 {
+        let (tf, tp) = (self.face_dip.to_radians().tan(), self.plane_dip.to_radians().tan());
+        self.height - (self.height / tf + self.crack_behind_crest) * tp
+    }
+    /// `FS = (c A + W cos(psi_p) tan(phi)) / (W sin(psi_p))` with
+    /// `A = (H - z) / sin(psi_p)` and
+    /// `W = 1/2 gamma H^2 [(1 - (z/H)^2) cot(psi_p) - cot(psi_f)]` (per m of width).
+    pub fn fs(&self) -> f64 {
+        let (h, z) = (self.height, self.crack_depth());
+        let (pf, pp) = (self.face_dip.to_radians(), self.plane_dip.to_radians());
+        let area = (h - z) / pp.sin();
+        let w = 0.5 * self.unit_weight * h * h * ((1.0 - (z / h).powi(2)) / pp.tan() - 1.0 / pf.tan());
+        (self.cohesion * area + w * pp.cos() * self.friction_deg.to_radians().tan()) / (w * pp.sin())
+    }
+}
+
+/// [`PLANE_FAILURE`]: the issue's transcription of Hoek & Bray's case, FS = 1.3469.
+pub const PLANE_FAILURE_SET: PlaneFailure = PlaneFailure {
+    height: 30.0,
+    face_dip: 60.0,
+    plane_dip: 30.0,
+    cohesion: 48.0e3,
+    friction_deg: 30.0,
+    unit_weight: 25.5e3,
+    crack_behind_crest: 9.0,
+};
+
+/// A wedge on two planes (dip, dip direction in degrees) of equal friction
+/// and no cohesion, sliding along their line of intersection (Hoek & Bray
+/// ch. 8): `FS = K tan(phi) / tan(psi_i)` with the wedge factor
+/// `K = sin(beta) / sin(xi / 2)`, `xi` the wedge's included angle and `beta`
+/// the tilt of its bisector, both in the section normal to the line of
+/// intersection, `psi_i` its plunge.
+#[derive(Debug, Clone, Copy)]
+pub struct WedgeFactor {
+    pub plane_a: (f64, f64),
+    pub plane_b: (f64, f64),
+    pub friction_deg: f64,
+}
+
+impl WedgeFactor {
+    fn normal((dip, dd): (f64, f64)) -> [f64; 3] {
+        let (d, a) = (dip.to_radians(), dd.to_radians());
+        [d.sin() * a.sin(), d.sin() * a.cos(), d.cos()]
+    }
+    /// `(K, psi_i in degrees)`.
+    pub fn factor(&self) -> (f64, f64) {
+        let (a, b) = (Self::normal(self.plane_a), Self::normal(self.plane_b));
+        let dot = |u: [f64; 3], v: [f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+        let i = [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+        let i = i.map(|c| c / dot(i, i).sqrt());
+        let psi_i = i[2].abs().asin();
+        let xi = std::f64::consts::PI - dot(a, b).acos();
+        let bis = [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
+        let bis = bis.map(|c| c / dot(bis, bis).sqrt());
+        let up = [-i[0] * i[2], -i[1] * i[2], 1.0 - i[2] * i[2]];
+        let up = up.map(|c| c / dot(up, up).sqrt());
+        let beta = dot(bis, up).clamp(-1.0, 1.0).asin();
+        (beta.sin() / (0.5 * xi).sin(), psi_i.to_degrees())
+    }
+    pub fn fs(&self) -> f64 {
+        let (k, psi_i) = self.factor();
+        k * self.friction_deg.to_radians().tan() / psi_i.to_radians().tan()
+    }
+}
+
+/// [`WEDGE_SYMMETRIC`]: planes 55/215 and 55/325, phi 35: K = 1.3487, psi_i = 39.32, FS = 1.1529.
+pub const WEDGE_SYMMETRIC_SET: WedgeFactor =
+    WedgeFactor { plane_a: (55.0, 215.0), plane_b: (55.0, 325.0), friction_deg: 35.0 };
+
+/// `cdem srm` on the joint-set cases against their closed forms: 1 %. The
+/// final bracket is 0.01 wide, so its midpoint lies within 0.43 % of any FS
+/// inside it at FS 1.15; the rest is the mesh (references/joints.md: measured
+/// 0.29 % plane, 0.07 % wedge). The issue asked for 3 %.
+pub const TOL_JOINTS_SRM: f64 = 0.01;
+
+/// A tetrahedral wedge (Hoek & Bray ch. 8, the vector solution): joint planes
+/// 1 and 2, the upper surface and the face, each `(dip, dip direction)` in
+/// degrees, the lowest vertex O (where the line of intersection meets the
+/// face) at the origin, the upper surface through `(0, 0, height)`; the
+/// joints' `(c in Pa, phi in degrees)`; `unit_weight` in N/m^3.
+#[derive(Debug, Clone, Copy)]
+pub struct VectorWedge {
+    pub planes: [(f64, f64); 4],
+    pub height: f64,
+    pub unit_weight: f64,
+    pub strengths: [(f64, f64); 2],
+}
+
+impl VectorWedge {
+    fn normal((dip, dd): (f64, f64)) -> [f64; 3] {
+        let (d, a) = (dip.to_radians(), dd.to_radians());
+        [d.sin() * a.sin(), d.sin() * a.cos(), d.cos()]
+    }
+    /// The point on three planes `n_k . p = d_k` (Cramer's rule).
+    fn meet(n: [[f64; 3]; 3], d: [f64; 3]) -> [f64; 3] {
+        let det = |m: [[f64; 3]; 3]| {
+            m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+                + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+        };
+        let d0 = det(n);
+        [0, 1, 2].map(|k| {
+            let mut m = n;
+            for i in 0..3 {
+                m[i][k] = d[i];
+            }
+            det(m) / d0
+        })
+    }
+    /// `(W, A_1, A_2, N_1, N_2, FS)`: the weight `gamma V` of the tetrahedron
+    /// O, A (planes 1, top, face), B (2, top, face), P (1, 2, top); the areas
+    /// of its faces on the joints; the normal reactions from equilibrium
+    /// normal to the line of intersection `i`,
+    /// `N_1 + N_2 (n_1 . n_2) = W n_1z`, `N_1 (n_1 . n_2) + N_2 = W n_2z`; and
+    /// `FS = (c_1 A_1 + c_2 A_2 + N_1 tan(phi_1) + N_2 tan(phi_2)) / (W sin(psi_i))`.
+    pub fn solve(&self) -> (f64, f64, f64, f64, f64, f64) {
+        let [n1, n2, n3, n4] = self.planes.map(Self::normal);
+        let cross = |a: [f64; 3], b: [f64; 3]| {
+            [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+        };
+        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let norm = |a: [f64; 3]| dot(a, a).sqrt();
+        let d3 = n3[2] * self.height;
+        let a = Self::meet([n1, n3, n4], [0.0, d3, 0.0]);
+        let b = Self::meet([n2, n3, n4], [0.0, d3, 0.0]);
+        let p = Self::meet([n1, n2, n3], [0.0, 0.0, d3]);
+        let volume = dot(a, cross(b, p)).abs() / 6.0;
+        let (area1, area2) = (0.5 * norm(cross(a, p)), 0.5 * norm(cross(b, p)));
+        let w = self.unit_weight * volume;
+        let c12 = dot(n1, n2);
+        let (big_n1, big_n2) =
+            (w * (n1[2] - c12 * n2[2]) / (1.0 - c12 * c12), w * (n2[2] - c12 * n1[2]) / (1.0 - c12 * c12));
+        let i = cross(n1, n2);
+        let sin_psi = i[2].abs() / norm(i);
+        let [(c1, f1), (c2, f2)] = self.strengths;
+        let resist = c1 * area1 + c2 * area2 + big_n1 * f1.to_radians().tan() + big_n2 * f2.to_radians().tan();
+        (w, area1, area2, big_n1, big_n2, resist / (w * sin_psi))
+    }
+    pub fn fs(&self) -> f64 {
+        self.solve().5
+    }
+}
+
+/// [`WEDGE_GENERAL`]: planes 50/230 (c 10 kPa, phi 30) and 65/320 (c 10 kPa, phi 35), top
+/// 0/270, face 70/270, H = 12 m, rho = 2600 kg/m^3: FS = 1.1175.
+pub const WEDGE_GENERAL_SET: VectorWedge = VectorWedge {
+    planes: [(50.0, 230.0), (65.0, 320.0), (0.0, 270.0), (70.0, 270.0)],
+    height: 12.0,
+    unit_weight: 2600.0 * GRAVITY,
+    strengths: [(10.0e3, 30.0), (10.0e3, 35.0)],
+};
+/// `cdem srm` on [`WEDGE_GENERAL`] against the vector solution: 3 %, the
+/// issue's bound (references/joints.md: measured +1.0 %, ours high, the same
+/// on a 6x finer mesh).
+pub const TOL_JOINTS_WEDGE_GENERAL: f64 = 0.03;
+
+/// Block toppling on a stepped base (Goodman & Bray 1976; Hoek & Bray ch. 9):
+/// blocks `dx` wide on a base dipping `psi_p` (degrees), heights
+/// `y_n = n (a1 - b)` up to the crest block `n_crest`, `y_{n-1} - a2 - b` above.
+#[derive(Debug, Clone, Copy)]
+pub struct GoodmanBray {
+    pub dx: f64,
+    pub psi_p: f64,
+    pub a1: f64,
+    pub a2: f64,
+    pub b: f64,
+    pub n_crest: usize,
+    pub n_blocks: usize,
+}
+
+impl GoodmanBray {
+    /// `(y_n, M_n, L_n)` for `n = 1..n_blocks`: the height, where the force
+    /// from the block above acts on the upper face, where the force on the
+    /// block below acts on the lower face.
+    pub fn blocks(&self) -> Vec<(f64, f64, f64)> {
+        let mut y = 0.0;
+        (1..=self.n_blocks)
+            .map(|n| {
+                y = if n <= self.n_crest { n as f64 * (self.a1 - self.b) } else { y - self.a2 - self.b };
+                match n.cmp(&self.n_crest) {
+                    std::cmp::Ordering::Less => (y, y, y - self.a1),
+                    std::cmp::Ordering::Equal => (y, y - self.a2, y - self.a1),
+                    std::cmp::Ordering::Greater => (y, y - self.a2, y),
+                }
+            })
+            .collect()
+    }
+    /// The support force at the toe per unit weight, `P_0 / gamma`, from the
+    /// top block down: `P_{n-1}` the larger of
+    /// `P_{n-1,t} = [P_n (M_n - dx tan(phi)) + W_n/2 (y_n sin(psi) - dx cos(psi))] / L_n`
+    /// and `P_{n-1,s} = P_n - W_n (tan(phi) cos(psi) - sin(psi)) / (1 - tan(phi)^2)`,
+    /// zero where both are negative (a stable block).
+    pub fn p0(&self, phi_deg: f64) -> f64 {
+        let (t, s, c) = (phi_deg.to_radians().tan(), self.psi_p.to_radians().sin(), self.psi_p.to_radians().cos());
+        self.blocks().iter().rev().fold(0.0, |p, &(y, m, l)| {
+            let w = y * self.dx;
+            let topple =
+                if l > 0.0 { (p * (m - self.dx * t) + 0.5 * w * (y * s - self.dx * c)) / l } else { f64::NEG_INFINITY };
+            let slide = p - w * (t * c - s) / (1.0 - t * t);
+            topple.max(slide).max(0.0)
+        })
+    }
+    /// The friction angle at which `P_0 = 0` (degrees; bisection on [30, 50]).
+    pub fn limit_friction(&self) -> f64 {
+        let (mut lo, mut hi) = (30.0, 50.0);
+        for _ in 0..100 {
+            let mid = 0.5 * (lo + hi);
+            if self.p0(mid) > 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    }
+    /// `FS = tan(phi) / tan(phi_limit)`.
+    pub fn fs(&self, phi_deg: f64) -> f64 {
+        phi_deg.to_radians().tan() / self.limit_friction().to_radians().tan()
+    }
+}
+
+/// [`TOPPLING`]: Goodman & Bray's example, limit friction 38.151 deg (published 38.15).
+pub const TOPPLING_SET: GoodmanBray =
+    GoodmanBray { dx: 10.0, psi_p: 30.0, a1: 5.0, a2: 5.0, b: 1.0, n_crest: 10, n_blocks: 16 };
+/// The joints' friction angle of [`TOPPLING`] (degrees): the published limit.
+pub const TOPPLING_FRICTION_DEG: f64 = 38.15;
+/// `cdem srm` on [`TOPPLING`] against the recursion: 5 %, the issue's bound
+/// (references/joints.md: measured +3.5 %, ours high; not a joint-stiffness
+/// effect).
+pub const TOL_JOINTS_TOPPLING: f64 = 0.05;
 
 #[cfg(test)]
 mod tests {

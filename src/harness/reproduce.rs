@@ -146,6 +146,7 @@ fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Err
     }
     progress("plastic blocks: the Mohr-Coulomb limit of one hexahedron");
     rep.checks.push(suite::plastic::element_limit_row().0);
+    joint_sets(rep, progress)?;
     progress("analytic ensemble");
     rep.checks.extend(suite::ensemble::segment(root)?.rows);
     rep.checks.extend(validation::pyslope_rows(root)?);
@@ -160,6 +161,32 @@ fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Err
     rep.checks.extend(crate::harness::perf::rows::perf_rows(&h));
     let phase2 = crate::harness::perf::failure::phase2_figure(root, progress)?;
     rep.checks.extend(crate::harness::perf::rows::phase2_rows(&phase2));
+    Ok(())
+}
+
+/// The joint-set cases (no paper figure): plane failure, the wedge and
+/// toppling by `cdem srm` against their closed forms, each mechanism in
+/// section and plan, and the stereonets of the two geometry files.
+fn joint_sets(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
+    progress("joint sets: plane failure, wedge, toppling (cdem srm against the closed forms)");
+    std::fs::create_dir_all(rep.path("joints")).map_err(|e| Error::io(rep.path("joints"), e))?;
+    let _ = writeln!(rep.md, "## Joint sets: plane, wedge and toppling failure (references/joints.md)\n");
+    for case in suite::joints::run_all()? {
+        let name = case.row.id.trim_start_matches("joints/").trim_end_matches("-srm").to_string();
+        let file = format!("joints/{name}-mechanism.png");
+        if crate::output::figures::joints::mechanism_views(&case.result, &case.model, &rep.path(&file))? {
+            rep.figure(&format!("{}: the mechanism at the smallest unstable factor", case.case.name), &file);
+        }
+        rep.checks.push(case.row);
+    }
+    for (name, geometry) in
+        [("plane", "verification/joints/plane-geometry.toml"), ("wedge", "verification/joints/wedge-geometry.toml")]
+    {
+        let dir = rep.path(&format!("joints/{name}-kinematics"));
+        let k = crate::app::kinematics::kinematics(Path::new(geometry), &dir)?;
+        let _ = writeln!(rep.md, "Kinematic analysis of `{geometry}`:\n\n{}", k.table);
+        rep.figure(&format!("{name}: stereonet"), &format!("joints/{name}-kinematics/stereonet.png"));
+    }
     Ok(())
 }
 

@@ -65,6 +65,7 @@
 
 mod analysis;
 mod ensemble;
+pub mod joint_sets;
 mod validate;
 
 use std::path::{Path, PathBuf};

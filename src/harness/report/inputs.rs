@@ -17,7 +17,8 @@ use std::path::Path;
 /// The committed meshes and their sources, which `meshes/regenerated`
 /// compares: these and every case folder under them, and [`MESH_DIRS`].
 const CASE_DIRS: [&str; 2] = ["verification/cases", "verification/plastic"];
-const MESH_DIRS: [&str; 3] = ["verification/extreme", "verification/study", "verification/tutorial"];
+const MESH_DIRS: [&str; 4] =
+    ["verification/extreme", "verification/study", "verification/tutorial", "verification/joints"];
 
 /// Row-id prefix, and the files (relative to the repository root) its rows
 /// read besides their source. The extreme rows read
@@ -41,6 +42,10 @@ pub const DECLARED: &[(&str, &[&str])] = &[
     ("block/", &["tests/fixtures/block-on-plane.toml"]),
     ("srm/block-friction", &["verification/cases/block-srm/block-srm-friction.toml"]),
     ("srm/block-cohesion", &["verification/cases/block-srm/block-srm-cohesion.toml"]),
+    ("joints/plane-srm", &["verification/joints/plane.toml", "verification/joints/plane-geometry.toml"]),
+    ("joints/wedge-srm", &["verification/joints/wedge.toml", "verification/joints/wedge-geometry.toml"]),
+    ("joints/wedge-general-srm", &["verification/joints/wedge-general.toml", "verification/joints/wedge-general-geometry.toml"]),
+    ("joints/toppling-srm", &["verification/joints/toppling.toml"]),
     ("analysis/column/", &["verification/analysis/column-circle.toml"]),
     ("analysis/slope/", &["verification/cases/slope/slope.toml"]),
     ("ensemble/segment/", &["verification/ensemble/cohesive-segment.toml"]),

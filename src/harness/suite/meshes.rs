@@ -1,7 +1,7 @@
 //! The committed meshes against what gmsh makes of their `.geo` (row
 //! `meshes/regenerated`, as tests/gmsh_regen.rs checks it): every `.geo`
 //! under verification/extreme, verification/study, verification/tutorial,
-//! verification/cases/* and verification/plastic/*
+//! verification/joints, verification/cases/* and verification/plastic/*
 //! is regenerated into a temporary directory and compared with the `.msh`
 //! beside it (connectivity, tags and groups exactly, node coordinates within
 //! 1e-9 of the model size). Without gmsh the row is skipped, with the reason.
@@ -18,7 +18,7 @@ pub const NO_GMSH: &str = "gmsh is not on PATH (it must be in CI)";
 /// Every `.geo` with a committed `.msh` beside it, under `root`, sorted.
 pub fn geos(root: &Path) -> Vec<PathBuf> {
     let v = root.join("verification");
-    let mut dirs = vec![v.join("extreme"), v.join("study"), v.join("tutorial")];
+    let mut dirs = vec![v.join("extreme"), v.join("study"), v.join("tutorial"), v.join("joints")];
     for parent in ["cases", "plastic"] {
         dirs.extend(std::fs::read_dir(v.join(parent)).into_iter().flatten().flatten().map(|e| e.path()));
     }

@@ -8,6 +8,7 @@
 pub mod block;
 pub mod ensemble;
 pub mod extreme;
+pub mod joints;
 pub mod meshes;
 pub mod plastic;
 pub mod skfem;

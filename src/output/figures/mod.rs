@@ -7,8 +7,10 @@
 
 pub mod analysis;
 pub mod ensemble;
+pub mod joints;
 pub mod mechanism;
 pub mod plot;
 pub mod section;
+pub mod stereonet;
 
 pub use plot::*;

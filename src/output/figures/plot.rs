@@ -332,6 +332,8 @@ pub struct ContourStyle {
     pub notes: Vec<String>,
     /// Draw the patches' edges (thin grey).
     pub edges: bool,
+    /// The vertical axis of each panel, by panel (absent: "z (m)").
+    pub y_desc: Vec<String>,
 }
 
 /// Filled-polygon contour of a section (e.g. element faces on the slab's front
@@ -390,7 +392,7 @@ pub fn contour_panels(
     let (body, foot_area) = rest.split_vertically(ph * rows as u32);
     let (grid, bar) = body.split_horizontally(pw * cols as u32);
     for (k, (area, panel)) in grid.split_evenly((rows, cols)).iter().zip(panels).enumerate() {
-        let _ = k;
+        let y_desc = style.y_desc.get(k).map_or("z (m)", String::as_str);
         let mut chart = ChartBuilder::on(area)
             .caption(&panel.title, ("sans-serif", 18))
             .margin(10)
@@ -402,7 +404,7 @@ pub fn contour_panels(
             .configure_mesh()
             .disable_mesh()
             .x_desc("x (m)")
-            .y_desc("z (m)")
+            .y_desc(y_desc)
             .x_label_formatter(&|v| tick_label(*v, x1 - x0))
             .y_label_formatter(&|v| tick_label(*v, z1 - z0))
             .label_style(("sans-serif", 14))
