@@ -43,9 +43,7 @@ use crate::model::Model;
 pub fn step_bytes(model: &Model, block: bool) -> f64 {
     let (n_s, n_n) = (model.springs.len() as f64, model.n_nodes() as f64);
     let ends = if n_n > 0.0 { 2.0 * n_s / n_n } else { 0.0 };
-    let el = &model.elements;
-    let element_bytes = (8 * el.k.len() + 48 * el.nodes.len()) as f64;
-    let mut bytes = element_bytes + 145.0 * n_s + (60.0 + 28.0 * ends + 164.0) * n_n;
+    let mut bytes = element_bytes(model) + 145.0 * n_s + (60.0 + 28.0 * ends + 164.0) * n_n;
     if block {
         let mut copies = std::collections::HashMap::<u32, f64>::new();
         for &m in &model.mesh_node {
@@ -56,3 +54,14 @@ pub fn step_bytes(model: &Model, block: bool) -> f64 {
     }
     bytes
 }
+
+/// Bytes of the element pass: every element's packed `K_e` and, per corner,
+/// the `u` gather and the slot write (3 f64 each): 2784 B per hexahedron.
+pub fn element_bytes(model: &Model) -> f64 {
+    let el = &model.elements;
+    (8 * el.k.len() + 48 * el.nodes.len()) as f64
+}
+
+/// Bytes per hexahedron element-step before `K_e` was packed (the full
+/// 24 x 24 `K_e`, 4608 B, plus 384 B; references/performance.md).
+pub const FULL_KE_ELEMENT_BYTES: f64 = 4992.0;
