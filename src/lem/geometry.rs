@@ -406,17 +406,31 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
     let homogeneous = f.homogeneous();
     let eps_z = 1e-9 * f.height();
     let (mut deep, mut drive, mut gross, mut resist) = (false, 0.0, 0.0f64, 0.0);
-    for i in 0..n {
+    if let Some(m) = homogeneous {
+        // One material: the same sums as below, without the per-slice lookups.
+        s.c.fill(m.c);
+        s.tan_phi.fill(m.tan_phi);
+        let ends = s.xb.windows(2);
+        let per_slice = s.w.iter_mut().zip(&s.sin_a).zip(&s.cos_a).zip(&s.l);
+        let out = s.bishop_a.iter_mut().zip(s.bishop_b.iter_mut());
+        for (((((w, &sin_a), &cos_a), &l), x), (ba, bb)) in per_slice.zip(ends).zip(out) {
+            let a = w.max(0.0);
+            let weight = m.gamma * a;
+            deep |= a >= lim.min_depth * (x[1] - x[0]);
+            drive += weight * sin_a;
+            gross += (weight * sin_a).abs();
+            *w = weight;
+            resist += m.c * l + weight * cos_a * m.tan_phi;
+            *ba = m.c * l * cos_a + weight * m.tan_phi;
+            *bb = sin_a * m.tan_phi;
+        }
+    }
+    for i in (0..n).filter(|_| homogeneous.is_none()) {
         let (x0, x1) = (s.xb[i], s.xb[i + 1]);
         let a = s.w[i].max(0.0);
-        let (w, strength) = match homogeneous {
-            Some(m) => (m.gamma * a, m),
-            None => {
-                let base = [c.xc + r * s.sin_a[i], c.zc - r * s.cos_a[i] + eps_z];
-                let w = column_weight(f, c, 0.5 * (x0 + x1), &mut s.column).ok_or(Reject::NoMaterial)? * (x1 - x0);
-                (w, f.strength_at(base).ok_or(Reject::NoMaterial)?)
-            }
-        };
+        let base = [c.xc + r * s.sin_a[i], c.zc - r * s.cos_a[i] + eps_z];
+        let w = column_weight(f, c, 0.5 * (x0 + x1), &mut s.column).ok_or(Reject::NoMaterial)? * (x1 - x0);
+        let strength = f.strength_at(base).ok_or(Reject::NoMaterial)?;
         // The deepest slice's mean height a / (x1 - x0) reaches min_depth.
         deep |= a >= lim.min_depth * (x1 - x0);
         drive += w * s.sin_a[i];
