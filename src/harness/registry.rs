@@ -900,11 +900,11 @@ pub const ROWS: &[RowSpec] = &[
     spec("perf/srm/brittle/wall", SRM_BRITTLE_CASE, "cdem srm wall time (s) (goal <= 60)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),
     spec("perf/srm/brittle/trial-steps-mean", SRM_BRITTLE_CASE, "mean steps per trial (3DEC's default cap 50,000)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),
     spec("perf/srm/brittle/trial-steps-max", SRM_BRITTLE_CASE, "largest steps of a trial (3DEC's default cap 50,000)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),
-    spec("perf/srm/brittle/fs-change", SRM_BRITTLE_CASE, "|FS| change, trials warm-started against from the elastic state (goal <= the bracket width 0.01)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),
+    spec("perf/srm/brittle/fs-change", SRM_BRITTLE_CASE, "change of FS, trials warm-started against from the elastic state (goal <= the bracket width 0.01)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),
     spec("perf/srm/ductile/wall", SRM_DUCTILE_CASE, "cdem srm wall time (s) (goal <= 15)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),
     spec("perf/srm/ductile/trial-steps-mean", SRM_DUCTILE_CASE, "mean steps per trial (3DEC's default cap 50,000)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),
     spec("perf/srm/ductile/trial-steps-max", SRM_DUCTILE_CASE, "largest steps of a trial (3DEC's default cap 50,000)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),
-    spec("perf/srm/ductile/fs-change", SRM_DUCTILE_CASE, "|FS| change, trials warm-started against from the elastic state (goal <= the bracket width 0.01)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),
+    spec("perf/srm/ductile/fs-change", SRM_DUCTILE_CASE, "change of FS, trials warm-started against from the elastic state (goal <= the bracket width 0.01)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),
     // Ensembles of the slip-surface slope (verification/ensemble/paper-slope-slip*.toml): measured by
     // `cdem perf` only, skipped in the tests and in `cdem reproduce`.
     spec("perf/ensemble/members-per-hour", ENSEMBLE_CASE, "members per hour, elastic + eq. 21 K + phase-2 end state, one process (against the SRM goal of 100)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs").may_skip(ENSEMBLE_PERF_SKIP),

@@ -131,7 +131,7 @@ pub fn srm_perf_rows(f: &SrmFigure, e: &SrmFigure) -> Vec<Check> {
             if (f.trial_budget as f64) < cap { "below" } else { "not below" }
         )),
         row(&change).value(fs_change, width, f.seconds + e.seconds).with_note(format!(
-            "|FS warm - FS elastic|: FS {} / {}, bracket [{}, {}] / [{}, {}], {} / {} trials",
+            "FS warm / from the elastic state {} / {}, bracket [{}, {}] / [{}, {}], {} / {} trials",
             fmt(f.fs),
             fmt(e.fs),
             fmt(f.bracket_lo),
