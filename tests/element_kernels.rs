@@ -154,6 +154,12 @@ fn packed_stiffness_is_the_full_one() {
                 assert!((packed_entry(&k, m, i, j) - op.k[i * n + j]).abs() < 1e-12 * kmax);
             }
         }
+        let full = unpack_symmetric(&k, m);
+        for i in 0..n {
+            for j in 0..n {
+                assert_eq!(full[i * n + j], packed_entry(&k, m, i, j), "{kind:?} unpacked ({i}, {j})");
+            }
+        }
         let u: Vec<f64> = (0..n).map(|i| ((i * 7 + 3) % 11) as f64 * 1e-3 - 5e-3).collect();
         let nodes: Vec<u32> = (0..m as u32).collect();
         let mut f = vec![0.0; n];

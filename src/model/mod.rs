@@ -60,6 +60,11 @@ impl Elements {
     pub fn stiffness_entry(&self, e: usize, row: usize, col: usize) -> f64 {
         packed_entry(self.stiffness(e), self.offset[e + 1] - self.offset[e], row, col)
     }
+    /// Element `e`'s full `K_e`, `3n x 3n` row-major in the first `(3n)^2`
+    /// values ([`unpack_symmetric`](crate::physics::element::unpack_symmetric)).
+    pub fn stiffness_full(&self, e: usize) -> [f64; 576] {
+        crate::physics::element::unpack_symmetric(self.stiffness(e), self.offset[e + 1] - self.offset[e])
+    }
 }
 
 /// One interface kind: index 0 is the scene's default `[joints]`, then one per

@@ -162,6 +162,32 @@ pub fn packed_entry(k: &[f64], m: usize, row: usize, col: usize) -> f64 {
     }
 }
 
+/// The full `K_e` (`3m x 3m` row-major, in the first `(3m)^2` values) of
+/// the packed one of `m <= 8` corners: for the passes that assemble or bound
+/// `K_e` once (masses, time step, coarse space), not for the step.
+pub fn unpack_symmetric(k: &[f64], m: usize) -> [f64; 576] {
+    let n = 3 * m;
+    let mut full = [0.0; 576];
+    let mut at = 0;
+    for c in 0..m {
+        for (a, b) in [(0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2)] {
+            full[(3 * c + a) * n + 3 * c + b] = k[at];
+            full[(3 * c + b) * n + 3 * c + a] = k[at];
+            at += 1;
+        }
+        for d in c + 1..m {
+            for a in 0..3 {
+                for b in 0..3 {
+                    full[(3 * c + a) * n + 3 * d + b] = k[at];
+                    full[(3 * d + b) * n + 3 * c + a] = k[at];
+                    at += 1;
+                }
+            }
+        }
+    }
+    full
+}
+
 /// Eq. 12: the deformation force of one element, `f_e = K_e u_e`, written to
 /// the element's own slot `f_e` (`3n` values, corner-major). `k` is the
 /// upper triangle of `K_e` in corner blocks ([`pack_symmetric`]); `nodes`

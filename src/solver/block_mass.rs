@@ -113,9 +113,11 @@ impl BlockMass {
         let el = &model.elements;
         for e in 0..el.len() {
             let corners = el.corners(e);
+            let k = el.stiffness_full(e);
+            let n = 3 * corners.len();
             for (p, &i) in corners.iter().enumerate() {
                 for (q, &j) in corners.iter().enumerate() {
-                    add(i as usize, j as usize, &|a, d| el.stiffness_entry(e, 3 * p + a, 3 * q + d));
+                    add(i as usize, j as usize, &|a, d| k[(3 * p + a) * n + 3 * q + d]);
                 }
             }
         }

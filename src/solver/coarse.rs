@@ -217,11 +217,13 @@ fn assemble(model: &Model, dof: &[u32], col_ptr: &[usize], row_idx: &[usize]) ->
     let el = &model.elements;
     for e in 0..el.len() {
         element_dofs(model, dof, e, &mut ed);
+        let k = el.stiffness_full(e);
+        let m = ed.len();
         for (b, &j) in ed.iter().enumerate().filter(|(_, &j)| j != NONE) {
             let col = &row_idx[col_ptr[j as usize]..col_ptr[j as usize + 1]];
             for (a, &i) in ed.iter().enumerate().filter(|(_, &i)| i != NONE && i >= j) {
                 let at = col.partition_point(|&r| r < i as usize);
-                values[col_ptr[j as usize] + at] += el.stiffness_entry(e, a, b);
+                values[col_ptr[j as usize] + at] += k[a * m + b];
             }
         }
     }
