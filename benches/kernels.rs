@@ -2,7 +2,8 @@
 //! own, on the paper slope at four mesh sizes (hexahedra in the name):
 //!
 //! - `element_forces/hex_N`: every element writes `K_e u_e` (eq. 12) into
-//!   its slot: reads its 24x24 condensed `K_e` (4608 B), gathers 8 corners x
+//!   its slot: reads the upper triangle of its condensed `K_e` (300 values,
+//!   2400 B; 4608 B before it was packed), gathers 8 corners x
 //!   3 displacements, writes 24 values;
 //! - `element_forces_1thread/hex_N`: the same on a one-thread rayon pool
 //!   (to compare with the single-thread stream triad);

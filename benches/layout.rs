@@ -1,5 +1,5 @@
 //! Element-force layouts side by side (references/layout.md): the condensed
-//! `K_e u_e` of the solver (`forces::element_forces`, 4608 B of `K_e` per
+//! `K_e u_e` of the solver (`forces::element_forces`, 2400 B of packed `K_e` per
 //! hexahedron) against the per-tetrahedron operator form
 //! (`physics::tet_operator`, 24 x 9 f64 = 1728 B per hexahedron), on the
 //! paper slope at 1000, 4000 and 16000 hexahedra, each on a 1-thread and a

@@ -5,7 +5,9 @@
 mod common;
 
 use cdem::mesh::shape::{check_cell, cross, dot, CellKind, Decomposition};
-use cdem::physics::element::{element_force, element_operators, element_stress};
+use cdem::physics::element::{
+    element_force, element_operators, element_stress, pack_symmetric, packed_entry, packed_len,
+};
 use common::{perturbed, rock, UNIT_HEX, UNIT_PRISM};
 
 /// Polyhedron volume by the divergence theorem over the face fans (a, b, F):
@@ -100,7 +102,7 @@ fn patch_test_uniform_strain_is_exact_in_one_perturbed_element() {
             assert!((s[c] - expected[c]).abs() < 1e-10 * smax, "{kind:?} stress[{c}] {} vs {}", s[c], expected[c]);
         }
         let mut f = vec![0.0; u.len()];
-        element_force(&op.k, &nodes, &u, &mut f); // one element: its slot is the global vector
+        element_force(&pack_symmetric(&op.k, x.len()), &nodes, &u, &mut f); // one element: its slot is the global vector
         let energy = 0.5 * f.iter().zip(&u).map(|(a, b)| a * b).sum::<f64>();
         let exact = 0.5
             * op.volume
@@ -115,7 +117,7 @@ fn patch_test_uniform_strain_is_exact_in_one_perturbed_element() {
         let w = [0.3e-3, -0.2e-3, 0.5e-3];
         let ur: Vec<f64> = x.iter().flat_map(|p| cross(w, *p)).collect();
         let mut fr = vec![0.0; u.len()];
-        element_force(&op.k, &nodes, &ur, &mut fr);
+        element_force(&pack_symmetric(&op.k, x.len()), &nodes, &ur, &mut fr);
         assert!(fr.iter().all(|v| v.abs() < 1e-10 * fmax), "{kind:?} rotation gives force");
     }
 }
@@ -128,6 +130,44 @@ fn stiffness_is_symmetric() {
     for i in 0..24 {
         for j in 0..24 {
             assert!((op.k[i * 24 + j] - op.k[j * 24 + i]).abs() < 1e-12 * kmax);
+        }
+    }
+}
+
+/// The packed upper triangle ([`pack_symmetric`]) gives the same `K_e u_e` as
+/// the full matrix to round-off, and [`packed_entry`] reads back every entry
+/// (the upper triangle exactly, the lower one as its transpose).
+#[test]
+fn packed_stiffness_is_the_full_one() {
+    for (kind, base) in [(CellKind::Hex8, UNIT_HEX.to_vec()), (CellKind::Prism6, UNIT_PRISM.to_vec())] {
+        let x = perturbed(&base, 1.0, 0.2, 5);
+        let op = element_operators(kind, &x, &rock()).unwrap();
+        let (m, n) = (x.len(), 3 * x.len());
+        let k = pack_symmetric(&op.k, m);
+        assert_eq!(k.len(), packed_len(m));
+        let kmax = op.k.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+        for i in 0..n {
+            for j in 0..n {
+                let (r, c) = if i / 3 <= j / 3 { (i, j) } else { (j, i) };
+                let upper = if r / 3 == c / 3 { op.k[r.min(c) * n + r.max(c)] } else { op.k[r * n + c] };
+                assert_eq!(packed_entry(&k, m, i, j), upper, "{kind:?} entry ({i}, {j})");
+                assert!((packed_entry(&k, m, i, j) - op.k[i * n + j]).abs() < 1e-12 * kmax);
+            }
+        }
+        let full = unpack_symmetric(&k, m);
+        for i in 0..n {
+            for j in 0..n {
+                assert_eq!(full[i * n + j], packed_entry(&k, m, i, j), "{kind:?} unpacked ({i}, {j})");
+            }
+        }
+        let u: Vec<f64> = (0..n).map(|i| ((i * 7 + 3) % 11) as f64 * 1e-3 - 5e-3).collect();
+        let nodes: Vec<u32> = (0..m as u32).collect();
+        let mut f = vec![0.0; n];
+        element_force(&k, &nodes, &u, &mut f);
+        let full: Vec<f64> = (0..n).map(|i| (0..n).map(|j| op.k[i * n + j] * u[j]).sum()).collect();
+        let scale = kmax * 5e-3;
+        for i in 0..n {
+            assert!((f[i] - full[i]).abs() < 1e-13 * scale * n as f64, "{kind:?} f[{i}] {} vs {}", f[i], full[i]);
         }
     }
 }

@@ -10,7 +10,7 @@ use std::path::Path;
 use cdem::mesh::perturb::SplitMix64;
 use cdem::mesh::shape::{cross, CellKind};
 use cdem::model::ELEMENT_SLOT;
-use cdem::physics::element::{element_force, element_operators};
+use cdem::physics::element::{element_force, element_operators, pack_symmetric};
 use cdem::physics::tet_operator::{tet_element_force, tet_operator, TetTopology};
 use cdem::scene::Scene;
 use cdem::solver::forces;
@@ -30,7 +30,7 @@ fn both(kind: CellKind, x: &[[f64; 3]], u: &[f64]) -> (Vec<f64>, Vec<f64>, f64) 
     let b = tet_operator(kind, x).unwrap();
     let nodes: Vec<u32> = (0..x.len() as u32).collect();
     let mut f_k = vec![0.0; u.len()];
-    element_force(&op.k, &nodes, u, &mut f_k);
+    element_force(&pack_symmetric(&op.k, x.len()), &nodes, u, &mut f_k);
     let mut f_t = vec![0.0; u.len()];
     tet_element_force(&TetTopology::of(kind), &b, mat.lame, &nodes, u, &mut f_t);
     // Scale of the forces: |K_e|_max |u|_max.

@@ -5,8 +5,10 @@
 //! once (phase 1 of [`super::run`]; [`super::failure::phase_plan`]). For a
 //! trial factor `F` every breakable spring gets `T / F`, `c / F` and
 //! `tan(phi) / F` in its joint state ([`JointState::reduced`]; the model is
-//! not touched), and phase 2 ([`super::failure`]) runs from the elastic
-//! state with the plan restarted as new: `Equilibrium` is
+//! not touched), and phase 2 ([`super::failure`]) runs with the plan
+//! restarted as new from the end state of the largest stable trial below `F`
+//! ([`TrialStart::Warm`], the default; the elastic state if there is none,
+//! or always with [`TrialStart::Elastic`]): `Equilibrium` is
 //! stable, `GlobalSliding` unstable, and `Undecided` (the per-trial step
 //! budget, by default the model's response time `N_r`, ran out) is counted
 //! as unstable, as FLAC counts a trial that does not converge. Brittle
@@ -42,6 +44,18 @@ pub const BRACKET_WIDTH: f64 = 0.01;
 pub const MIN_FACTOR: f64 = 0.05;
 pub const MAX_FACTOR: f64 = 100.0;
 
+/// The state a trial starts from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum TrialStart {
+    /// The elastic state, for every trial.
+    Elastic,
+    /// The end state of the largest stable trial below the trial's factor
+    /// (its displacements, velocities and spring histories; the strengths
+    /// reduced by the new factor), else the elastic state. Its stable trials
+    /// start near their equilibrium (references/srm.md, "Warm starts").
+    Warm,
+}
+
 /// One trial factor and what phase 2 did with it.
 #[derive(Debug, Clone, Copy, Serialize)]
 pub struct Trial {
@@ -52,9 +66,13 @@ pub struct Trial {
     pub max_displacement: f64,
     /// Springs that failed (either kind).
     pub failed_springs: usize,
-    /// Volume of the plastic blocks' tetrahedra that yielded in the trial
-    /// (m^3; 0 without plastic blocks).
+    /// Volume of the plastic blocks' tetrahedra that have yielded at the
+    /// trial's end, the state it started from included (m^3; 0 without
+    /// plastic blocks).
     pub yielded_volume: f64,
+    /// The stable factor whose end state the trial started from (None: the
+    /// elastic state).
+    pub started_from: Option<f64>,
     /// The trial's own setup before its first step: the elastic state
     /// copied, its strengths reduced, the plan restarted (s).
     pub setup_s: f64,
@@ -193,12 +211,15 @@ pub struct Reduction {
     /// Building `plan` (s).
     pub plan_setup_s: f64,
     params: FailureParams,
+    start: TrialStart,
+    /// The largest stable factor tried so far and its end state.
+    stable: Option<(f64, State)>,
 }
 
 impl Reduction {
     /// Phase 1 of `scene` (its `[failure]` section, if any, gives the trial
     /// settings). Needs a breakable interface.
-    pub fn new(scene: &Scene) -> Result<(Self, usize), Error> {
+    pub fn new(scene: &Scene, start: TrialStart) -> Result<(Self, usize), Error> {
         let params = scene.failure.clone().unwrap_or_default();
         let mut elastic_scene = scene.clone();
         elastic_scene.failure = None;
@@ -224,7 +245,9 @@ impl Reduction {
         let plan_setup_s = t.elapsed().as_secs_f64();
         let steps = run.elastic.steps;
         let strengths = run.state.joints.clone();
-        Ok((Self { model: run.model, strengths, elastic: run.state, plan, plan_setup_s, params }, steps))
+        let reduction =
+            Self { model: run.model, strengths, elastic: run.state, plan, plan_setup_s, params, start, stable: None };
+        Ok((reduction, steps))
     }
 
     /// Phase 2 with every breakable strength divided by `factor`; returns the
@@ -236,13 +259,17 @@ impl Reduction {
         watch: &mut dyn Watch,
     ) -> Result<(Trial, Vec<f64>, Option<Vec<CellPlastic>>), Error> {
         let t = std::time::Instant::now();
-        let mut state = self.elastic.clone();
+        let (started_from, mut state) = match &self.stable {
+            Some((f, end)) if self.start == TrialStart::Warm && *f < factor => (Some(*f), end.clone()),
+            _ => (None, self.elastic.clone()),
+        };
+        (state.step, state.time) = (self.elastic.step, self.elastic.time);
         state.joints = self.strengths.reduced(factor);
         state.rock.reduce(factor);
         self.plan.restart();
         let setup_s = t.elapsed().as_secs_f64();
         let r = failure::run(&mut self.plan, &self.model, &mut state, &self.params, false, watch)?;
-        let since: Vec<f64> = state.u.iter().zip(&r.u_elastic).map(|(a, b)| a - b).collect();
+        let since: Vec<f64> = state.u.iter().zip(&self.elastic.u).map(|(a, b)| a - b).collect();
         let cells = self.model.plastic_cells(&state.rock, &state.u);
         let yielded_volume = cells.as_deref().map_or(0.0, |c| self.model.plastic_summary(c).yielded_volume);
         let trial = Trial {
@@ -252,9 +279,13 @@ impl Reduction {
             max_displacement: max_displacement(&since),
             failed_springs: failed_springs(&state.springs.status).total(),
             yielded_volume,
+            started_from,
             setup_s,
             wall_s: t.elapsed().as_secs_f64(),
         };
+        if trial.stable() && self.stable.as_ref().is_none_or(|(f, _)| *f < factor) {
+            self.stable = Some((factor, state));
+        }
         Ok((trial, since, cells))
     }
 
@@ -264,10 +295,19 @@ impl Reduction {
     }
 }
 
-/// The strength reduction of a scene (see the module doc).
+/// The strength reduction of a scene (see the module doc), trials warm-started.
 pub fn run_srm(scene: &Scene, progress: &mut dyn FnMut(SrmProgress)) -> Result<(SrmResult, Model), Error> {
+    run_srm_from(scene, TrialStart::Warm, progress)
+}
+
+/// [`run_srm`] with the trials started from `start`.
+pub fn run_srm_from(
+    scene: &Scene,
+    start: TrialStart,
+    progress: &mut dyn FnMut(SrmProgress),
+) -> Result<(SrmResult, Model), Error> {
     let t0 = std::time::Instant::now();
-    let (mut red, elastic_steps) = Reduction::new(scene)?;
+    let (mut red, elastic_steps) = Reduction::new(scene, start)?;
     progress(SrmProgress::Elastic(elastic_steps));
     let trial_budget = red.budget();
     let mut trials = Vec::new();

@@ -59,6 +59,12 @@ pub(crate) struct Slices {
     pub l: Vec<f64>,
     pub c: Vec<f64>,
     pub tan_phi: Vec<f64>,
+    /// Bishop's per-slice constants: `c l cos(alpha) + W tan_phi` and
+    /// `sin(alpha) tan_phi` ([`super::methods::bishop`]).
+    pub bishop_a: Vec<f64>,
+    pub bishop_b: Vec<f64>,
+    /// The ordinary method's `sum(c l + W cos(alpha) tan_phi)` (N/m).
+    pub resist_ordinary: f64,
     /// Scratch: z of zone-edge crossings in one column.
     column: Vec<f64>,
     /// Scratch, at the `n + 1` slice ends: x, `u = x - xc`,
@@ -83,6 +89,8 @@ impl Slices {
             l: v(),
             c: v(),
             tan_phi: v(),
+            bishop_a: v(),
+            bishop_b: v(),
             column: Vec::with_capacity(16),
             xb: v(),
             ub: v(),
@@ -274,6 +282,14 @@ fn asin_series(x: f64) -> f64 {
     x * p
 }
 
+/// `v` at length `n` (its values are overwritten by the caller).
+#[inline]
+fn sized(v: &mut Vec<f64>, n: usize) {
+    if v.len() != n {
+        v.resize(n, 0.0);
+    }
+}
+
 /// Cuts the circle (internal frame) into `n` slices, filling `s`.
 ///
 /// No trigonometry per slice: with `w = sqrt(r^2 - u^2)` at the slice ends
@@ -299,10 +315,15 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
     let half_inv_r = 0.5 / r;
     // Pass 1, slice ends: x, u = x - xc, w = sqrt(r^2 - u^2), ground height.
     for v in [&mut s.xb, &mut s.ub, &mut s.wb, &mut s.zg] {
-        v.clear();
+        sized(v, n + 1);
     }
+    // The ground segment under x and its slope, moved right as x grows.
     let mut k = 0usize;
-    for i in 0..=n {
+    let slope_of = |k: usize| (g[k + 1][1] - g[k][1]) / (g[k + 1][0] - g[k][0]);
+    let mut slope = slope_of(0);
+    for (i, (((xb, ub), wb), zg)) in
+        s.xb.iter_mut().zip(s.ub.iter_mut()).zip(s.wb.iter_mut()).zip(s.zg.iter_mut()).enumerate()
+    {
         let x = if i == 0 {
             xx
         } else if i == n {
@@ -311,20 +332,24 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
             xx + i as f64 * b
         };
         let u = x - c.xc;
-        while k + 2 < g.len() && g[k + 1][0] <= x {
-            k += 1;
+        if k + 2 < g.len() && g[k + 1][0] <= x {
+            while k + 2 < g.len() && g[k + 1][0] <= x {
+                k += 1;
+            }
+            slope = slope_of(k);
         }
-        let (p, q) = (g[k], g[k + 1]);
-        s.xb.push(x);
-        s.ub.push(u);
-        s.wb.push((r2 - u * u).max(0.0).sqrt());
-        s.zg.push(p[1] + (q[1] - p[1]) * (x - p[0]) / (q[0] - p[0]));
+        *xb = x;
+        *ub = u;
+        *wb = (r2 - u * u).max(0.0).sqrt();
+        *zg = g[k][1] + slope * (x - g[k][0]);
     }
     // Pass 2, per slice and branch-free: base direction from the chord,
     // subtended angle, area under the ground (trapezoid) less the arc's.
-    for v in [&mut s.w, &mut s.sin_a, &mut s.cos_a, &mut s.l] {
-        v.clear();
-        v.resize(n, 0.0);
+    // Every slice's four values are written below: no need to zero them.
+    for v in
+        [&mut s.w, &mut s.sin_a, &mut s.cos_a, &mut s.l, &mut s.c, &mut s.tan_phi, &mut s.bishop_a, &mut s.bishop_b]
+    {
+        sized(v, n);
     }
     let (xb, ub, wb, zg) = (&s.xb[..=n], &s.ub[..=n], &s.wb[..=n], &s.zg[..=n]);
     let (area, sin_a, cos_a, l) = (&mut s.w[..n], &mut s.sin_a[..n], &mut s.cos_a[..n], &mut s.l[..n]);
@@ -380,28 +405,44 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
     // Pass 3: weights and strengths.
     let homogeneous = f.homogeneous();
     let eps_z = 1e-9 * f.height();
-    s.c.clear();
-    s.tan_phi.clear();
-    let (mut max_h, mut drive, mut gross) = (0.0f64, 0.0, 0.0f64);
-    for i in 0..n {
+    let (mut deep, mut drive, mut gross, mut resist) = (false, 0.0, 0.0f64, 0.0);
+    if let Some(m) = homogeneous {
+        // One material: the same sums as below, without the per-slice lookups.
+        s.c.fill(m.c);
+        s.tan_phi.fill(m.tan_phi);
+        let ends = s.xb.windows(2);
+        let per_slice = s.w.iter_mut().zip(&s.sin_a).zip(&s.cos_a).zip(&s.l);
+        let out = s.bishop_a.iter_mut().zip(s.bishop_b.iter_mut());
+        for (((((w, &sin_a), &cos_a), &l), x), (ba, bb)) in per_slice.zip(ends).zip(out) {
+            let a = w.max(0.0);
+            let weight = m.gamma * a;
+            deep |= a >= lim.min_depth * (x[1] - x[0]);
+            drive += weight * sin_a;
+            gross += (weight * sin_a).abs();
+            *w = weight;
+            resist += m.c * l + weight * cos_a * m.tan_phi;
+            *ba = m.c * l * cos_a + weight * m.tan_phi;
+            *bb = sin_a * m.tan_phi;
+        }
+    }
+    for i in (0..n).filter(|_| homogeneous.is_none()) {
         let (x0, x1) = (s.xb[i], s.xb[i + 1]);
         let a = s.w[i].max(0.0);
-        let (w, strength) = match homogeneous {
-            Some(m) => (m.gamma * a, m),
-            None => {
-                let base = [c.xc + r * s.sin_a[i], c.zc - r * s.cos_a[i] + eps_z];
-                let w = column_weight(f, c, 0.5 * (x0 + x1), &mut s.column).ok_or(Reject::NoMaterial)? * (x1 - x0);
-                (w, f.strength_at(base).ok_or(Reject::NoMaterial)?)
-            }
-        };
-        max_h = max_h.max(a / (x1 - x0));
+        let base = [c.xc + r * s.sin_a[i], c.zc - r * s.cos_a[i] + eps_z];
+        let w = column_weight(f, c, 0.5 * (x0 + x1), &mut s.column).ok_or(Reject::NoMaterial)? * (x1 - x0);
+        let strength = f.strength_at(base).ok_or(Reject::NoMaterial)?;
+        // The deepest slice's mean height a / (x1 - x0) reaches min_depth.
+        deep |= a >= lim.min_depth * (x1 - x0);
         drive += w * s.sin_a[i];
         gross += (w * s.sin_a[i]).abs();
         s.w[i] = w;
-        s.c.push(strength.c);
-        s.tan_phi.push(strength.tan_phi);
+        s.c[i] = strength.c;
+        s.tan_phi[i] = strength.tan_phi;
+        resist += strength.c * s.l[i] + w * s.cos_a[i] * strength.tan_phi;
+        s.bishop_a[i] = strength.c * s.l[i] * s.cos_a[i] + w * strength.tan_phi;
+        s.bishop_b[i] = s.sin_a[i] * strength.tan_phi;
     }
-    if max_h < lim.min_depth {
+    if !deep {
         return Err(Reject::Sliver);
     }
     // A net driving moment within rounding of zero (a circle symmetric under
@@ -410,6 +451,7 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
         return Err(Reject::WrongDirection);
     }
     s.drive = drive;
+    s.resist_ordinary = resist;
     Ok(())
 }
 

@@ -25,8 +25,9 @@
 //! **Bishop simplified**, moment equilibrium with horizontal interslice forces:
 //! `FS = sum[(c b + W tan(phi)) / m_alpha] / sum(W sin(alpha))`,
 //! `m_alpha = cos(alpha) + sin(alpha) tan(phi) / FS`, with `b = l cos(alpha)`;
-//! Newton's method on `FS sum(W sin(alpha)) - sum[...] = 0` from the ordinary
-//! FS (a fixed-point step where the Newton step is unusable) until the update
+//! Halley's method (Newton with the second derivative) on
+//! `FS sum(W sin(alpha)) - sum[...] = 0` from the ordinary
+//! FS (a fixed-point step where that step is unusable) until the update
 //! `|dFS| <= 1e-10 FS` (tighter than the customary 1e-6 because the search's
 //! refinement compares neighbouring circles). A circle with any
 //! `m_alpha <= 0` has no Bishop FS.

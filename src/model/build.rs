@@ -10,7 +10,7 @@ use crate::mesh::adjacency::{face_key, face_nodes, FaceAdjacency, FaceKey};
 use crate::mesh::perturb::perturb_nodes;
 use crate::mesh::shape::{cross, dot, norm, sub, CellDefect};
 use crate::mesh::Mesh;
-use crate::physics::element::element_operators;
+use crate::physics::element::{element_operators, pack_symmetric};
 use crate::physics::material::{Material, MaterialLaw, YoungPoisson};
 use crate::physics::plastic::PlasticCells;
 use crate::physics::spring::Springs;
@@ -81,7 +81,7 @@ pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
         el.nodes.extend_from_slice(&ids);
         el.offset.push(el.nodes.len());
         el.k_offset.push(el.k.len());
-        el.k.extend_from_slice(&op.k);
+        el.k.extend(pack_symmetric(&op.k, cell.kind.n_nodes()));
         el.grad.extend_from_slice(&op.grad);
         el.material.push(mat);
         el.volume.push(op.volume);

@@ -15,7 +15,7 @@ pub use spec::{JointMode, ModelSpec};
 
 use crate::mesh::shape::CellDefect;
 use crate::mesh::CellKind;
-use crate::physics::element::element_stress;
+use crate::physics::element::{element_stress, packed_entry, packed_len};
 use crate::physics::joint::{JointProps, JointState};
 use crate::physics::material::Material;
 use crate::physics::plastic::{cell_plastic, CellPlastic, PlasticCells, RockState, Volumetric};
@@ -25,7 +25,9 @@ use crate::physics::tet_operator::TetOperators;
 
 /// Elements, struct of arrays. Element `e` owns corners
 /// `nodes[offset[e]..offset[e+1]]` (model node indices) and the stiffness
-/// block `k[k_offset[e]..]` of size `(3n)^2`.
+/// block `k[k_offset[e]..]`: the upper triangle of the symmetric `K_e` in
+/// corner blocks, [`packed_len`]`(n)` values
+/// ([`pack_symmetric`](crate::physics::element::pack_symmetric)).
 #[derive(Debug, Clone, Default)]
 pub struct Elements {
     pub kind: Vec<CellKind>,
@@ -51,9 +53,19 @@ impl Elements {
     pub fn corners(&self, e: usize) -> &[u32] {
         &self.nodes[self.offset[e]..self.offset[e + 1]]
     }
+    /// The packed `K_e` of element `e` (what [`element_force`](crate::physics::element::element_force) reads).
     pub fn stiffness(&self, e: usize) -> &[f64] {
-        let n = 3 * (self.offset[e + 1] - self.offset[e]);
-        &self.k[self.k_offset[e]..self.k_offset[e] + n * n]
+        let n = self.offset[e + 1] - self.offset[e];
+        &self.k[self.k_offset[e]..self.k_offset[e] + packed_len(n)]
+    }
+    /// Entry `(row, col)` of element `e`'s `K_e` (dof `3c + i`).
+    pub fn stiffness_entry(&self, e: usize, row: usize, col: usize) -> f64 {
+        packed_entry(self.stiffness(e), self.offset[e + 1] - self.offset[e], row, col)
+    }
+    /// Element `e`'s full `K_e`, `3n x 3n` row-major in the first `(3n)^2`
+    /// values ([`unpack_symmetric`](crate::physics::element::unpack_symmetric)).
+    pub fn stiffness_full(&self, e: usize) -> [f64; 576] {
+        crate::physics::element::unpack_symmetric(self.stiffness(e), self.offset[e + 1] - self.offset[e])
     }
 }
 

@@ -20,7 +20,8 @@ use crate::physics::material::{Lame, Material};
 /// What the solver needs of one element, built once.
 #[derive(Debug, Clone)]
 pub struct ElementOperators {
-    /// Condensed stiffness, `3n x 3n` row-major, dof `3c + i` (N/m).
+    /// Condensed stiffness, `3n x 3n` row-major, dof `3c + i` (N/m); the model
+    /// stores its upper triangle ([`pack_symmetric`]).
     pub k: Vec<f64>,
     /// Volume-averaged corner gradients (1/m), for the element stress.
     pub grad: Vec<[f64; 3]>,
@@ -131,25 +132,124 @@ pub fn add_isotropic_stiffness(k: &mut [f64], g: &[[f64; 3]], w: f64, lame: Lame
     }
 }
 
+/// Number of values of a symmetric `K_e` of `n_corners` corners stored by
+/// [`pack_symmetric`]: the upper triangle, `3n (3n + 1) / 2` (300 of 576 for a
+/// hexahedron).
+pub const fn packed_len(n_corners: usize) -> usize {
+    3 * n_corners * (3 * n_corners + 1) / 2
+}
+
+/// Index in a symmetric diagonal block `[xx, xy, xz, yy, yz, zz]` of its entry `(a, b)`.
+const DIAG: [[usize; 3]; 3] = [[0, 1, 2], [1, 3, 4], [2, 4, 5]];
+
+/// Start of corner `c`'s group in the packed layout of `m` corners: each
+/// earlier corner `c'` holds its diagonal block (6) and its `m - c' - 1`
+/// blocks to the right (9 each).
+const fn group_start(m: usize, c: usize) -> usize {
+    6 * c + 9 * (c * (m - 1) - c * (c.saturating_sub(1)) / 2)
+}
+
+/// The upper triangle of the symmetric `K_e` (`3n x 3n`, row-major, dof
+/// `3c + i`) in corner blocks, the layout [`element_force`] reads: for each
+/// corner `c` in turn, its diagonal block `K_cc` as `[xx, xy, xz, yy, yz, zz]`,
+/// then the blocks `K_cd` (`d > c`, 3 x 3 row-major). `K_dc = K_cd^T` is not
+/// stored. 2400 B per hexahedron instead of 4608 (references/layout.md).
+pub fn pack_symmetric(k: &[f64], n_corners: usize) -> Vec<f64> {
+    let n = 3 * n_corners;
+    let mut out = Vec::with_capacity(packed_len(n_corners));
+    for c in 0..n_corners {
+        for (a, b) in [(0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2)] {
+            out.push(k[(3 * c + a) * n + 3 * c + b]);
+        }
+        for d in c + 1..n_corners {
+            for a in 0..3 {
+                for b in 0..3 {
+                    out.push(k[(3 * c + a) * n + 3 * d + b]);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Entry `(row, col)` of the symmetric `K_e` stored by [`pack_symmetric`]
+/// (`m` corners): the assembly's and the mass rules' access, not the step's.
+pub fn packed_entry(k: &[f64], m: usize, row: usize, col: usize) -> f64 {
+    let (c, a, d, b) =
+        if row / 3 <= col / 3 { (row / 3, row % 3, col / 3, col % 3) } else { (col / 3, col % 3, row / 3, row % 3) };
+    let start = group_start(m, c);
+    if c == d {
+        k[start + DIAG[a][b]]
+    } else {
+        k[start + 6 + 9 * (d - c - 1) + 3 * a + b]
+    }
+}
+
+/// The full `K_e` (`3m x 3m` row-major, in the first `(3m)^2` values) of
+/// the packed one of `m <= 8` corners: for the passes that assemble or bound
+/// `K_e` once (masses, time step, coarse space), not for the step.
+pub fn unpack_symmetric(k: &[f64], m: usize) -> [f64; 576] {
+    let n = 3 * m;
+    let mut full = [0.0; 576];
+    let mut at = 0;
+    for c in 0..m {
+        for (a, b) in [(0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2)] {
+            full[(3 * c + a) * n + 3 * c + b] = k[at];
+            full[(3 * c + b) * n + 3 * c + a] = k[at];
+            at += 1;
+        }
+        for d in c + 1..m {
+            for a in 0..3 {
+                for b in 0..3 {
+                    full[(3 * c + a) * n + 3 * d + b] = k[at];
+                    full[(3 * d + b) * n + 3 * c + a] = k[at];
+                    at += 1;
+                }
+            }
+        }
+    }
+    full
+}
+
 /// Eq. 12: the deformation force of one element, `f_e = K_e u_e`, written to
-/// the element's own slot `f_e` (`3n` values, corner-major). `nodes` maps
-/// corners to model nodes; `u` is the global displacement (3 per node).
+/// the element's own slot `f_e` (`3n` values, corner-major). `k` is the
+/// upper triangle of `K_e` in corner blocks ([`pack_symmetric`]); `nodes`
+/// maps corners to model nodes; `u` is the global displacement (3 per node).
+///
+/// Each stored block is read once and used twice: `f_c += K_cd u_d` and
+/// `f_d += K_cd^T u_c`. The sums run in a fixed order (corner by corner),
+/// so the force does not depend on the thread that computes it.
 #[inline]
 pub fn element_force(k: &[f64], nodes: &[u32], u: &[f64], f_e: &mut [f64]) {
-    let n = 3 * nodes.len();
-    let mut u_e = [0.0; 24];
+    let m = nodes.len();
+    let mut u_e = [[0.0; 3]; 8];
     for (c, &node) in nodes.iter().enumerate() {
         let b = 3 * node as usize;
-        u_e[3 * c..3 * c + 3].copy_from_slice(&u[b..b + 3]);
+        u_e[c].copy_from_slice(&u[b..b + 3]);
     }
-    // K_e is symmetric, so f = K u is accumulated column by column (row j of
-    // K is column j): n independent sums the compiler can vectorise, instead
-    // of one dependent 24-term sum per row.
-    f_e.fill(0.0);
-    for (col, &u_j) in k.chunks_exact(n).zip(&u_e[..n]) {
-        for (f, k_ij) in f_e.iter_mut().zip(col) {
-            *f += k_ij * u_j;
+    let mut f = [[0.0; 3]; 8];
+    let mut at = 0;
+    for c in 0..m {
+        let s = &k[at..at + 6];
+        at += 6;
+        let uc = u_e[c];
+        f[c][0] += s[0] * uc[0] + s[1] * uc[1] + s[2] * uc[2];
+        f[c][1] += s[1] * uc[0] + s[3] * uc[1] + s[4] * uc[2];
+        f[c][2] += s[2] * uc[0] + s[4] * uc[1] + s[5] * uc[2];
+        for d in c + 1..m {
+            let b = &k[at..at + 9];
+            at += 9;
+            let ud = u_e[d];
+            for i in 0..3 {
+                f[c][i] += b[3 * i] * ud[0] + b[3 * i + 1] * ud[1] + b[3 * i + 2] * ud[2];
+            }
+            for j in 0..3 {
+                f[d][j] += b[j] * uc[0] + b[3 + j] * uc[1] + b[6 + j] * uc[2];
+            }
         }
+    }
+    for (slot, fc) in f_e.chunks_exact_mut(3).zip(&f[..m]) {
+        slot.copy_from_slice(fc);
     }
 }
 

@@ -113,7 +113,7 @@ impl BlockMass {
         let el = &model.elements;
         for e in 0..el.len() {
             let corners = el.corners(e);
-            let k = el.stiffness(e);
+            let k = el.stiffness_full(e);
             let n = 3 * corners.len();
             for (p, &i) in corners.iter().enumerate() {
                 for (q, &j) in corners.iter().enumerate() {

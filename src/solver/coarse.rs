@@ -217,7 +217,7 @@ fn assemble(model: &Model, dof: &[u32], col_ptr: &[usize], row_idx: &[usize]) ->
     let el = &model.elements;
     for e in 0..el.len() {
         element_dofs(model, dof, e, &mut ed);
-        let k = el.stiffness(e);
+        let k = el.stiffness_full(e);
         let m = ed.len();
         for (b, &j) in ed.iter().enumerate().filter(|(_, &j)| j != NONE) {
             let col = &row_idx[col_ptr[j as usize]..col_ptr[j as usize + 1]];

@@ -27,7 +27,7 @@ fn component_row_sums(model: &Model, springs: bool) -> Vec<f64> {
     let el = &model.elements;
     for e in 0..el.len() {
         let nodes = el.corners(e);
-        let k = el.stiffness(e);
+        let k = el.stiffness_full(e);
         let n = 3 * nodes.len();
         for (c, &node) in nodes.iter().enumerate() {
             for i in 0..3 {

@@ -143,6 +143,10 @@ impl ShardsFigure {
     }
 }
 
+/// Rounds of the one process against the two shards ([`shards_figure`]),
+/// in alternating order; the best time of each is kept.
+pub const SHARD_ROUNDS: usize = 2;
+
 /// The 1-minute load average (Linux).
 pub fn load_average() -> Option<f64> {
     std::fs::read_to_string("/proc/loadavg").ok()?.split_whitespace().next()?.parse().ok()
@@ -169,11 +173,12 @@ fn wait(exe: &Path, child: Child, what: &str) -> Result<(), Error> {
 }
 
 /// Runs members `0..members` of `input` (relative to `root`), base seed
-/// [`SEED`], with `exe` (a `cdem` binary) under `dir`: once as one process
-/// with this process's thread count (`dir/single`), once as one process on
-/// one thread (`dir/single-1-thread`), once as shards 0/2 and
-/// 1/2 started together with half the threads each (`dir/shard-{0,1}`),
-/// merged into `dir/merged`; compares the three `members.jsonl`.
+/// [`SEED`], with `exe` (a `cdem` binary) under `dir`: in each of
+/// [`SHARD_ROUNDS`] rounds (alternating which runs first) as one process with
+/// this process's thread count (`dir/single-R`) and as shards 0/2 and 1/2
+/// started together with half the threads each (`dir/shard-R-{0,1}`, merged
+/// into `dir/merged-R`), the best time of each kept; once as one process on
+/// one thread (`dir/single-1-thread`); compares every `members.jsonl`.
 pub fn shards_figure(
     exe: &Path,
     root: &Path,
@@ -193,13 +198,61 @@ pub fn shards_figure(
     let per_shard = (threads / 2).max(1);
     let path_str = |p: &Path| p.display().to_string();
 
-    progress(&format!("ensemble: {members} members of {input}, one process ({threads} threads)"));
-    let single = path_str(&sub("single"));
+    // One process on `threads` threads against two shards on `per_shard`
+    // each (the same cores in total), in SHARD_ROUNDS rounds of alternating
+    // order, the best of each: on a shared machine the other jobs' load
+    // swings from minute to minute, and the one that runs first in a round
+    // would otherwise carry it alone.
     let load_before = load_average();
-    let t = Instant::now();
-    let child = spawn(exe, root, threads, &["ensemble", input, "--members", &m, "--seed", &seed, "--out", &single])?;
-    wait(exe, child, "cdem ensemble (one process)")?;
-    let one_process_s = t.elapsed().as_secs_f64();
+    let (mut one_process_s, mut shards_s) = (f64::INFINITY, f64::INFINITY);
+    let mut outputs = Vec::new();
+    for round in 0..SHARD_ROUNDS {
+        let single = sub(&format!("single-{round}"));
+        let shard_dirs = [path_str(&sub(&format!("shard-{round}-0"))), path_str(&sub(&format!("shard-{round}-1")))];
+        let one = || -> Result<f64, Error> {
+            let out = path_str(&single);
+            let t = Instant::now();
+            let child =
+                spawn(exe, root, threads, &["ensemble", input, "--members", &m, "--seed", &seed, "--out", &out])?;
+            wait(exe, child, "cdem ensemble (one process)")?;
+            Ok(t.elapsed().as_secs_f64())
+        };
+        let two = || -> Result<f64, Error> {
+            let t = Instant::now();
+            let children = (0..2)
+                .map(|i| {
+                    let shard = format!("{i}/2");
+                    let args = ["ensemble", input, "--members", &m, "--seed", &seed, "--shard", &shard, "--out"];
+                    let mut all: Vec<&str> = args.to_vec();
+                    all.push(&shard_dirs[i]);
+                    spawn(exe, root, per_shard, &all)
+                })
+                .collect::<Result<Vec<_>, _>>()?;
+            // Both waited for before an error is returned: no shard is left running.
+            let ends: Vec<_> = children
+                .into_iter()
+                .enumerate()
+                .map(|(i, c)| wait(exe, c, &format!("cdem ensemble --shard {i}/2")))
+                .collect();
+            ends.into_iter().collect::<Result<Vec<()>, _>>()?;
+            Ok(t.elapsed().as_secs_f64())
+        };
+        progress(&format!(
+            "ensemble: {members} members of {input}, one process ({threads} threads) and 2 concurrent shards \
+             ({per_shard} thread(s) each), round {round} ({})",
+            if round % 2 == 0 { "one process first" } else { "shards first" }
+        ));
+        let (a, b) = if round % 2 == 0 {
+            let a = one()?;
+            (a, two()?)
+        } else {
+            let b = two()?;
+            (one()?, b)
+        };
+        one_process_s = one_process_s.min(a);
+        shards_s = shards_s.min(b);
+        outputs.push((single, shard_dirs));
+    }
 
     progress("ensemble: the same members, one process on 1 thread");
     let single1 = path_str(&sub("single-1-thread"));
@@ -208,35 +261,25 @@ pub fn shards_figure(
     wait(exe, child, "cdem ensemble (one process, 1 thread)")?;
     let one_thread_s = t.elapsed().as_secs_f64();
 
-    progress(&format!("ensemble: the same members as 2 concurrent shards ({per_shard} thread(s) each)"));
-    let shard_dirs = [path_str(&sub("shard-0")), path_str(&sub("shard-1"))];
-    let t = Instant::now();
-    let children = (0..2)
-        .map(|i| {
-            let shard = format!("{i}/2");
-            let args = ["ensemble", input, "--members", &m, "--seed", &seed, "--shard", &shard, "--out"];
-            let mut all: Vec<&str> = args.to_vec();
-            all.push(&shard_dirs[i]);
-            spawn(exe, root, per_shard, &all)
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    // Both waited for before an error is returned: no shard is left running.
-    let ends: Vec<_> =
-        children.into_iter().enumerate().map(|(i, c)| wait(exe, c, &format!("cdem ensemble --shard {i}/2"))).collect();
-    ends.into_iter().collect::<Result<Vec<()>, _>>()?;
-    let shards_s = t.elapsed().as_secs_f64();
-
-    progress("ensemble: merging the two shards");
-    let merged = path_str(&sub("merged"));
-    let t = Instant::now();
-    let child = spawn(exe, root, threads, &["ensemble", "merge", &shard_dirs[0], &shard_dirs[1], "--out", &merged])?;
-    wait(exe, child, "cdem ensemble merge")?;
-    let merge_s = t.elapsed().as_secs_f64();
+    progress("ensemble: merging the two shards of each round");
+    let mut merge_s = f64::INFINITY;
+    for (round, (_, shard_dirs)) in outputs.iter().enumerate() {
+        let merged = path_str(&sub(&format!("merged-{round}")));
+        let t = Instant::now();
+        let child =
+            spawn(exe, root, threads, &["ensemble", "merge", &shard_dirs[0], &shard_dirs[1], "--out", &merged])?;
+        wait(exe, child, "cdem ensemble merge")?;
+        merge_s = merge_s.min(t.elapsed().as_secs_f64());
+    }
 
     let read = |p: PathBuf| std::fs::read(&p).map_err(|e| Error::io(&p, e));
-    let a = read(sub("single").join("members.jsonl"))?;
-    let b = read(sub("merged").join("members.jsonl"))?;
+    let a = read(sub("single-0").join("members.jsonl"))?;
     let c = read(sub("single-1-thread").join("members.jsonl"))?;
+    let mut identical = a == c;
+    for round in 0..SHARD_ROUNDS {
+        identical &= read(sub(&format!("single-{round}")).join("members.jsonl"))? == a;
+        identical &= read(sub(&format!("merged-{round}")).join("members.jsonl"))? == a;
+    }
     Ok(ShardsFigure {
         input: input.to_string(),
         members,
@@ -246,7 +289,7 @@ pub fn shards_figure(
         one_thread_s,
         shards_s,
         merge_s,
-        identical: a == b && a == c,
+        identical,
         jsonl_bytes: a.len(),
         load_before,
         load_after: load_average(),

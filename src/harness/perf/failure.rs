@@ -21,7 +21,7 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use crate::drivers::srm::{run_srm, Reduction, SrmProgress};
+use crate::drivers::srm::{run_srm_from, Reduction, SrmProgress, TrialStart};
 use crate::drivers::Watch;
 use crate::error::Error;
 use crate::harness::registry;
@@ -34,17 +34,22 @@ use crate::summary::EndState;
 #[derive(Debug, Clone, Serialize)]
 pub struct FailureFigures {
     pub phase2: Phase2Figure,
+    /// Every variant with its trials warm-started (the default).
     pub srm: Vec<SrmFigure>,
+    /// The same variants with every trial from the elastic state, run just
+    /// before each warm-started one (side by side).
+    pub srm_elastic: Vec<SrmFigure>,
 }
 
 /// [`phase2_figure`], and with `srm` every [`srm_figure`] of [`SRM_VARIANTS`].
 pub fn failure_figures(root: &Path, srm: bool, progress: &mut dyn FnMut(&str)) -> Result<FailureFigures, Error> {
     let phase2 = phase2_figure(root, progress)?;
-    let srm = match srm {
-        true => SRM_VARIANTS.iter().map(|&(v, s)| srm_figure(root, v, s, progress)).collect::<Result<_, _>>()?,
-        false => Vec::new(),
-    };
-    Ok(FailureFigures { phase2, srm })
+    let (mut warm, mut elastic) = (Vec::new(), Vec::new());
+    for &(v, s) in SRM_VARIANTS.iter().filter(|_| srm) {
+        elastic.push(srm_figure(root, v, s, TrialStart::Elastic, progress)?);
+        warm.push(srm_figure(root, v, s, TrialStart::Warm, progress)?);
+    }
+    Ok(FailureFigures { phase2, srm: warm, srm_elastic: elastic })
 }
 
 /// Phase 2 of the slip-surface slope with one kind of mass.
@@ -94,7 +99,7 @@ impl Watch for Quiet {}
 pub fn slip_surface_reduction(root: &Path, block_mass: bool) -> Result<(Reduction, usize), Error> {
     let mut scene = Scene::load(&root.join(registry::SLOPE_SLIP.input))?;
     scene.failure.get_or_insert_with(Default::default).block_mass = block_mass;
-    Reduction::new(&scene)
+    Reduction::new(&scene, TrialStart::Elastic)
 }
 
 /// Runs phase 2 of the slip-surface slope under `root` with node-block masses
@@ -149,7 +154,12 @@ pub fn srm_scene(root: &Path, softening: Softening) -> Result<Scene, Error> {
 pub struct SrmFigure {
     /// "brittle" or "ductile" ([`SRM_VARIANTS`]).
     pub variant: String,
+    /// Where its trials started.
+    pub start: TrialStart,
     pub fs: Option<f64>,
+    /// `[lo, hi]` of the search.
+    pub bracket_lo: Option<f64>,
+    pub bracket_hi: Option<f64>,
     pub trials: usize,
     /// Mean and largest phase-2 steps of a trial.
     pub mean_trial_steps: f64,
@@ -169,24 +179,29 @@ pub struct SrmFigure {
     pub mean_trial_s: f64,
 }
 
-/// Runs `cdem srm`'s strength reduction on [`srm_scene`] (no files written).
+/// Runs `cdem srm`'s strength reduction on [`srm_scene`] (no files written),
+/// its trials started from `start`.
 pub fn srm_figure(
     root: &Path,
     variant: &str,
     softening: Softening,
+    start: TrialStart,
     progress: &mut dyn FnMut(&str),
 ) -> Result<SrmFigure, Error> {
     let scene = srm_scene(root, softening)?;
-    progress(&format!("slip-surface slope: cdem srm, {variant}"));
-    let (r, _) = run_srm(&scene, &mut |p| {
+    progress(&format!("slip-surface slope: cdem srm, {variant}, {start:?} start"));
+    let (r, _) = run_srm_from(&scene, start, &mut |p| {
         if let SrmProgress::TrialStart(f) = p {
-            progress(&format!("slip-surface slope: cdem srm, {variant}, trial F = {f:.4}"));
+            progress(&format!("slip-surface slope: cdem srm, {variant}, {start:?} start, trial F = {f:.4}"));
         }
     })?;
     let steps: Vec<usize> = r.trials.iter().map(|t| t.steps).collect();
     Ok(SrmFigure {
         variant: variant.to_string(),
+        start,
         fs: r.fs,
+        bracket_lo: r.bracket[0],
+        bracket_hi: r.bracket[1],
         trials: r.trials.len(),
         mean_trial_steps: steps.iter().sum::<usize>() as f64 / steps.len().max(1) as f64,
         max_trial_steps: steps.iter().copied().max().unwrap_or(0),

@@ -12,7 +12,9 @@ use serde::Serialize;
 
 use super::pyslope::{pyslope_seconds, time_lem_grid, time_pyslope_grid, LEM_CASES};
 use super::stream::stream_triad;
-use super::timing::{time_dr, time_fem, time_pcg, time_steps, DrFigure, PcgFigure, StepFigure};
+use super::timing::{
+    time_dr, time_element_pass, time_fem, time_pcg, time_steps, DrFigure, ElementPassFigure, PcgFigure, StepFigure,
+};
 use crate::error::Error;
 use crate::model::Model;
 use crate::scene::Scene;
@@ -26,6 +28,8 @@ pub struct Headline {
     /// The scene's step (block masses) and the lumped-mass step.
     pub step_block: StepFigure,
     pub step_lumped: StepFigure,
+    /// The element pass alone.
+    pub element_pass: ElementPassFigure,
     pub dr_block: DrFigure,
     /// The elastic phase by two-level PCG.
     pub pcg: PcgFigure,
@@ -42,6 +46,10 @@ pub struct Headline {
 impl Headline {
     pub fn step_fraction_of_stream(&self) -> f64 {
         self.step_block.gbs / self.stream_gbs
+    }
+    /// The element pass's effective bandwidth over the triad's.
+    pub fn element_fraction_of_stream(&self) -> f64 {
+        self.element_pass.gbs / self.stream_gbs
     }
     pub fn dr_over_fem(&self) -> f64 {
         self.dr_block.seconds / self.fem_s
@@ -79,6 +87,7 @@ pub fn headline_with(
     progress("paper slope: step");
     let step_block = time_steps(model, &scene.solver, 500)?;
     let step_lumped = time_steps(model, &SolverParams { block_mass: Some(false), ..scene.solver.clone() }, 500)?;
+    let element_pass = time_element_pass(model, 2000);
     progress("paper slope: dynamic relaxation");
     let dr_block = time_dr(model, &scene.solver)?;
     progress("paper slope: PCG");
@@ -102,6 +111,7 @@ pub fn headline_with(
         stream_gbs,
         step_block,
         step_lumped,
+        element_pass,
         dr_block,
         pcg,
         fem_s,

@@ -2,16 +2,33 @@
 //! `cdem perf`, `cdem reproduce` and the tests report: every timed figure
 //! against its goal, measured side by side in one run.
 
+use crate::harness::perf::bytes::FULL_KE_ELEMENT_BYTES;
 use crate::harness::perf::ensemble::EnsembleFigures;
 use crate::harness::perf::failure::{Phase2Figure, Phase2Run, SrmFigure};
 use crate::harness::perf::headline::Headline;
 use crate::harness::registry::{self as reg, row};
 use crate::harness::report::Check;
 
+/// LEM grid search at least this many times faster than pySlope (issue 28, item 3).
+pub const GOAL_LEM_OVER_PYSLOPE: f64 = 300.0;
+/// Bytes per element-step at most this fraction of the full-`K_e` count (issue 28, item 2).
+pub const GOAL_ELEMENT_BYTES_FRACTION: f64 = 0.6;
+
 /// The performance goals (references/performance.md), reported.
 pub fn perf_rows(h: &Headline) -> Vec<Check> {
     let mut rows = vec![
         row("perf/bandwidth").value(h.step_fraction_of_stream(), 0.5, h.step_block.step_s),
+        row("perf/element-bytes")
+            .value(h.element_pass.bytes_per_element, GOAL_ELEMENT_BYTES_FRACTION * FULL_KE_ELEMENT_BYTES, h.element_pass.pass_s)
+            .with_note(format!(
+                "{:.2} of the {FULL_KE_ELEMENT_BYTES:.0} B with the full K_e; the element pass alone {:.3} ms, {:.1} GB/s \
+                 = {:.0} % of this run's triad ({:.1} GB/s)",
+                h.element_pass.bytes_per_element / FULL_KE_ELEMENT_BYTES,
+                1e3 * h.element_pass.pass_s,
+                h.element_pass.gbs,
+                100.0 * h.element_fraction_of_stream(),
+                h.stream_gbs
+            )),
         row("perf/dr-over-fem").value(h.dr_over_fem(), 3.0, h.dr_block.seconds),
         row("perf/pcg-over-fem").value(h.pcg_over_fem(), 3.0, h.pcg.seconds),
     ];
@@ -19,12 +36,12 @@ pub fn perf_rows(h: &Headline) -> Vec<Check> {
         let id = format!("perf/lem/{case}");
         let spec = crate::harness::registry::rows().into_iter().find(|r| r.id == id);
         let c = match spec {
-            Some(s) => s.value(pyslope / ours, 100.0, *ours),
+            Some(s) => s.value(pyslope / ours, GOAL_LEM_OVER_PYSLOPE, *ours),
             None => Check::new(
                 &format!("performance: LEM grid, {case}"),
                 "pySlope / ours time",
                 pyslope / ours,
-                100.0,
+                GOAL_LEM_OVER_PYSLOPE,
                 f64::NAN,
                 reg::PERFORMANCE_MD,
                 *ours,
@@ -66,22 +83,43 @@ pub fn phase2_rows(f: &Phase2Figure) -> Vec<Check> {
 /// The ids of the rows of one timed strength reduction (`variant` of
 /// [`crate::harness::perf::failure::SRM_VARIANTS`]): wall time, mean and
 /// largest steps per trial.
-pub fn srm_perf_ids(variant: &str) -> [String; 3] {
-    ["wall", "trial-steps-mean", "trial-steps-max"].map(|q| format!("perf/srm/{variant}/{q}"))
+pub fn srm_perf_ids(variant: &str) -> [String; 4] {
+    ["wall", "trial-steps-mean", "trial-steps-max", "fs-change"].map(|q| format!("perf/srm/{variant}/{q}"))
 }
 
-/// `cdem srm` on the slip-surface slope ([`crate::harness::perf::failure::srm_figure`]):
-/// its wall time against the goal, the mean and largest steps per trial
-/// against 3DEC's default cap. A search without a bracket carries a defect.
-pub fn srm_perf_rows(f: &SrmFigure) -> Vec<Check> {
-    let [wall, mean, max] = srm_perf_ids(&f.variant);
+/// The wall-time goal of a timed strength reduction: the ductile one 15 s
+/// (issue 28, item 1), the brittle one 60 s ([`reg::GOAL_SRM_SECONDS`]).
+pub fn srm_goal_seconds(variant: &str) -> f64 {
+    if variant == "ductile" {
+        reg::GOAL_SRM_DUCTILE_SECONDS
+    } else {
+        reg::GOAL_SRM_SECONDS
+    }
+}
+
+/// `cdem srm` on the slip-surface slope ([`crate::harness::perf::failure::srm_figure`]),
+/// trials warm-started (`f`) and from the elastic state (`e`, the same
+/// variant, same run): the warm wall time against the goal, the mean and
+/// largest steps per trial against 3DEC's default cap, and the change of FS
+/// against the bracket width. A search without a bracket carries a defect.
+pub fn srm_perf_rows(f: &SrmFigure, e: &SrmFigure) -> Vec<Check> {
+    let [wall, mean, max, change] = srm_perf_ids(&f.variant);
+    let width = crate::drivers::srm::BRACKET_WIDTH;
+    let fmt = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.4}"));
+    let fs_change = match (f.fs, e.fs) {
+        (Some(a), Some(b)) => (a - b).abs(),
+        _ => f64::INFINITY,
+    };
     let cap = reg::THREEDEC_TRIAL_STEP_CAP;
     let budget =
         format!("{} trials, {} ran to their budget of {} steps (10 N_r)", f.trials, f.undecided, f.trial_budget);
     let rows = vec![
-        row(&wall).value(f.seconds, reg::GOAL_SRM_SECONDS, f.seconds).with_note(format!(
-            "FS {}; {budget}",
-            f.fs.map_or("none (no bracket)".to_string(), |fs| format!("{fs:.3}"))
+        row(&wall).value(f.seconds, srm_goal_seconds(&f.variant), f.seconds).with_note(format!(
+            "FS {}; {budget}; from the elastic state in the same run {:.1} s ({:.2}x), {:.0} steps per trial",
+            f.fs.map_or("none (no bracket)".to_string(), |fs| format!("{fs:.3}")),
+            e.seconds,
+            e.seconds / f.seconds,
+            e.mean_trial_steps
         )),
         row(&mean)
             .value(f.mean_trial_steps, cap, f.seconds)
@@ -91,6 +129,17 @@ pub fn srm_perf_rows(f: &SrmFigure) -> Vec<Check> {
             f.max_trial_steps as f64 / cap,
             f.trial_budget,
             if (f.trial_budget as f64) < cap { "below" } else { "not below" }
+        )),
+        row(&change).value(fs_change, width, f.seconds + e.seconds).with_note(format!(
+            "FS warm / from the elastic state {} / {}, bracket [{}, {}] / [{}, {}], {} / {} trials",
+            fmt(f.fs),
+            fmt(e.fs),
+            fmt(f.bracket_lo),
+            fmt(f.bracket_hi),
+            fmt(e.bracket_lo),
+            fmt(e.bracket_hi),
+            f.trials,
+            e.trials
         )),
     ];
     match f.fs {

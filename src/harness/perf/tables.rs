@@ -39,6 +39,19 @@ impl Headline {
                 100.0 * s.gbs / self.stream_gbs
             );
         }
+        let e = &self.element_pass;
+        let _ = writeln!(
+            md,
+            "| element pass (eq. 12) alone, {} elements | {:.3} ms, {:.0} B per element-step ({:.2} of {:.0} B with the \
+             full K_e), {:.1} GB/s = {:.0} % of stream | <= 0.6 of the bytes |",
+            self.step_block.elements,
+            1e3 * e.pass_s,
+            e.bytes_per_element,
+            e.bytes_per_element / super::bytes::FULL_KE_ELEMENT_BYTES,
+            super::bytes::FULL_KE_ELEMENT_BYTES,
+            e.gbs,
+            100.0 * self.element_fraction_of_stream()
+        );
         let _ = writeln!(
             md,
             "| DR to 1e-5 / FEM solve (paper slope) | {:.3} s ({} steps) / {:.4} s ({} dofs) = {:.1}x | <= 3x |",
@@ -64,7 +77,7 @@ impl Headline {
         for (case, ours, py) in &self.lem {
             let _ = writeln!(
                 md,
-                "| LEM Bishop grid 20x20x10, {case}: pySlope / ours ({when}) | {py:.3} s / {:.2} ms = {:.0}x | >= 100x |",
+                "| LEM Bishop grid 20x20x10, {case}: pySlope / ours ({when}) | {py:.3} s / {:.2} ms = {:.0}x | >= 300x |",
                 1e3 * ours,
                 py / ours
             );
@@ -104,16 +117,20 @@ impl FailureFigures {
             reg::PHASE2_STEPS_BASELINE
         );
         let cap = reg::THREEDEC_TRIAL_STEP_CAP;
-        for f in &self.srm {
+        for f in self.srm_elastic.iter().chain(&self.srm) {
             let fs = f.fs.map_or("no bracket".to_string(), |fs| format!("FS {fs:.3}"));
+            let bracket = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.4}"));
             let _ = writeln!(
                 md,
-                "| cdem srm, slip-surface slope, {} | {:.1} s, {fs}, {} trials; steps per trial mean {:.0} / max {} \
+                "| cdem srm, slip-surface slope, {}, trials from the {} state | {:.1} s, bracket [{}, {}], {fs}, {} trials; steps per trial mean {:.0} / max {} \
                  = {:.3} / {:.3} of 3DEC's cap; {} trials ran to the budget of {} steps; a trial {:.3} s of which \
                  setup {:.1e} s, the phase-2 plan built once in {:.1e} s (before: once per trial, {:.1e} s in all) \
                  | <= {} s; cap {} steps |",
                 f.variant,
+                if f.start == crate::drivers::srm::TrialStart::Warm { "last stable" } else { "elastic" },
                 f.seconds,
+                bracket(f.bracket_lo),
+                bracket(f.bracket_hi),
                 f.trials,
                 f.mean_trial_steps,
                 f.max_trial_steps,
@@ -125,7 +142,7 @@ impl FailureFigures {
                 f.mean_trial_setup_s,
                 f.plan_setup_s,
                 f.plan_setup_s * f.trials as f64,
-                reg::GOAL_SRM_SECONDS,
+                crate::harness::perf::rows::srm_goal_seconds(&f.variant),
                 cap
             );
         }
@@ -260,8 +277,8 @@ pub fn perf_checks(head: &Headline, failure: &FailureFigures, ensemble: Option<&
     if failure.srm.is_empty() {
         rows.extend(crate::harness::perf::rows::srm_perf_skipped("not run: cdem perf --no-srm"));
     }
-    for f in &failure.srm {
-        rows.extend(crate::harness::perf::rows::srm_perf_rows(f));
+    for (f, e) in failure.srm.iter().zip(&failure.srm_elastic) {
+        rows.extend(crate::harness::perf::rows::srm_perf_rows(f, e));
     }
     match ensemble {
         Some(e) => rows.extend(crate::harness::perf::rows::ensemble_perf_rows(e)),
@@ -424,7 +441,7 @@ pub fn write_report(
     scaling: &[ScalingRow],
 ) -> Result<String, Error> {
     write_csv(&out.join("phase2.csv"), &[&failure.phase2.block, &failure.phase2.lumped])?;
-    write_csv(&out.join("srm.csv"), &failure.srm)?;
+    write_csv(&out.join("srm.csv"), &[failure.srm_elastic.clone(), failure.srm.clone()].concat())?;
     if let Some(e) = ensemble {
         write_csv(&out.join("ensemble.csv"), &e.csv_rows())?;
     }

@@ -62,6 +62,40 @@ pub fn time_steps(model: &Model, params: &SolverParams, steps: usize) -> Result<
     })
 }
 
+/// The element pass alone (`forces::element_forces`, eq. 12) on a model.
+#[derive(Debug, Clone, Serialize)]
+pub struct ElementPassFigure {
+    /// Seconds per pass (median of 5 batches).
+    pub pass_s: f64,
+    /// Bytes per element-step ([`super::bytes::element_bytes`]).
+    pub bytes_per_element: f64,
+    /// `bytes / pass_s` (GB/s).
+    pub gbs: f64,
+}
+
+/// Times `passes` element passes in 5 batches on a smooth displacement field.
+pub fn time_element_pass(model: &Model, passes: usize) -> ElementPassFigure {
+    let u: Vec<f64> = (0..3 * model.n_nodes()).map(|k| 1e-3 * ((k % 7) as f64 - 3.0)).collect();
+    let mut f = vec![0.0; crate::model::ELEMENT_SLOT * model.elements.len()];
+    let per_batch = passes.div_ceil(5).max(1);
+    let mut batches = Vec::with_capacity(5);
+    crate::solver::forces::element_forces(model, &u, &mut f);
+    for _ in 0..5 {
+        let t = Instant::now();
+        for _ in 0..per_batch {
+            crate::solver::forces::element_forces(model, std::hint::black_box(&u), &mut f);
+        }
+        batches.push(t.elapsed().as_secs_f64() / per_batch as f64);
+    }
+    batches.sort_by(f64::total_cmp);
+    let bytes = super::bytes::element_bytes(model);
+    ElementPassFigure {
+        pass_s: batches[2],
+        bytes_per_element: bytes / model.elements.len() as f64,
+        gbs: bytes / batches[2] / 1e9,
+    }
+}
+
 /// Dynamic relaxation from rest to the scene's tolerance.
 #[derive(Debug, Clone, Serialize)]
 pub struct DrFigure {
