@@ -91,12 +91,8 @@ fn plastic(scale: f64) -> Plastic {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut scene = cdem::scene::Scene::load(&root.join(cdem::harness::registry::SLOPE.input)).expect("slope scene");
     for m in &mut scene.material {
-        m.strength = Some(RockStrengthSection {
-            cohesion: 16e3,
-            friction_angle: 18.0,
-            tensile: None,
-            dilation_angle: 0.0,
-        });
+        m.strength =
+            Some(RockStrengthSection { cohesion: 16e3, friction_angle: 18.0, tensile: None, dilation_angle: 0.0 });
     }
     let model = cdem::drivers::build_model(&scene).expect("slope model");
     let u: Vec<f64> = displacement(&model).iter().map(|v| scale * v).collect();

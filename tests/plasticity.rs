@@ -28,10 +28,25 @@ fn the_elastic_plastic_element_is_its_mixed_stiffness() {
     use cdem::physics::plastic::{plastic_element_force, plastic_operator, TetPlastic, Volumetric, MAX_TETS};
     use cdem::physics::tet_operator::TetTopology;
     let strong = RockStrength { cohesion: 1e12, tan_phi: 0.5, tensile: 1e12, tan_psi: 0.0 };
-    let material =
-        Material { lame: YoungPoisson { young: 1e9, poisson: 0.3 }.into(), density: 2000.0, law: MaterialLaw::MohrCoulomb(strong) };
+    let material = Material {
+        lame: YoungPoisson { young: 1e9, poisson: 0.3 }.into(),
+        density: 2000.0,
+        law: MaterialLaw::MohrCoulomb(strong),
+    };
     let cells: [(CellKind, Vec<[f64; 3]>); 3] = [
-        (CellKind::Hex8, vec![[0., 0., 0.], [1.1, 0., 0.1], [1., 1., 0.], [0., 0.9, 0.], [0., 0., 1.], [1., 0.1, 1.2], [1., 1., 1.], [0.1, 1., 1.]]),
+        (
+            CellKind::Hex8,
+            vec![
+                [0., 0., 0.],
+                [1.1, 0., 0.1],
+                [1., 1., 0.],
+                [0., 0.9, 0.],
+                [0., 0., 1.],
+                [1., 0.1, 1.2],
+                [1., 1., 1.],
+                [0.1, 1., 1.],
+            ],
+        ),
         (CellKind::Prism6, vec![[0., 0., 0.], [1., 0., 0.], [0., 1., 0.1], [0., 0., 1.], [1.1, 0., 1.], [0., 1., 1.]]),
         (CellKind::Tet4, vec![[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.]]),
     ];
@@ -46,7 +61,18 @@ fn the_elastic_plastic_element_is_its_mixed_stiffness() {
         let mut hist = [TetPlastic::default(); MAX_TETS];
         let tets = plastic_operator(kind, &corners);
         let surface = MohrCoulomb::of(&strong);
-        plastic_element_force(&TetTopology::of(kind), &tets, &ops.grad, material.lame, &surface, &nodes, &u, Volumetric::Cell, &mut hist, &mut got);
+        plastic_element_force(
+            &TetTopology::of(kind),
+            &tets,
+            &ops.grad,
+            material.lame,
+            &surface,
+            &nodes,
+            &u,
+            Volumetric::Cell,
+            &mut hist,
+            &mut got,
+        );
         let scale = want.iter().fold(0.0f64, |a, v| a.max(v.abs()));
         for (g, w) in got.iter().zip(&want) {
             assert!((g - w).abs() <= 1e-12 * scale, "{kind:?}: {got:?} vs {want:?}");

@@ -19,9 +19,9 @@ use crate::physics::element::{element_stress, packed_entry, packed_len};
 use crate::physics::joint::{JointProps, JointState};
 use crate::physics::material::Material;
 use crate::physics::plastic::{cell_plastic, CellPlastic, PlasticCells, RockState, Volumetric};
-use crate::summary::PlasticSummary;
 use crate::physics::spring::Springs;
 use crate::physics::tet_operator::TetOperators;
+use crate::summary::PlasticSummary;
 
 /// Elements, struct of arrays. Element `e` owns corners
 /// `nodes[offset[e]..offset[e+1]]` (model node indices) and the stiffness

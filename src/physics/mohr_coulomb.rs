@@ -407,7 +407,12 @@ mod tests {
 
     #[test]
     fn the_closed_form_principal_values_are_the_eigenvalues() {
-        for s in [[1.0, 2.0, 3.0, 0.0, 0.0, 0.0], [-2e5, -1e5, -1.5e5, 1e4, 3e3, -2e4], [5.0; 6], [1.0, 1.0, 1.0, 0.0, 0.0, 0.0]] {
+        for s in [
+            [1.0, 2.0, 3.0, 0.0, 0.0, 0.0],
+            [-2e5, -1e5, -1.5e5, 1e4, 3e3, -2e4],
+            [5.0; 6],
+            [1.0, 1.0, 1.0, 0.0, 0.0, 0.0],
+        ] {
             let a = principal_values(&s);
             let b = principal(&s).0;
             for i in 0..3 {

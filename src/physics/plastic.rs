@@ -31,8 +31,8 @@
 //! `sigma_t = D (eps_t' - eps_t^p)`, returned by the Mohr-Coulomb return
 //! mapping each step, `eps_t^p += D^-1 (sigma_trial - sigma_t)`.
 
-use super::element::tet_gradients;
 use super::elasticity::Lame;
+use super::element::tet_gradients;
 use super::mohr_coulomb::{compliance, MohrCoulomb, RockStrength, Yield};
 use super::tet_operator::{corner_forces, point_displacements, TetTopology};
 use crate::mesh::shape::{CellKind, Decomposition, MAX_POINTS};

@@ -91,9 +91,9 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
             match &surface[material] {
                 Some(mc) => {
                     let mode = match cells.nodal[e] {
-                        true => Volumetric::Nodal(
-                            vertex_of(e).map(|a| vertex_strain[a]).sum::<f64>() / nodes.len() as f64,
-                        ),
+                        true => {
+                            Volumetric::Nodal(vertex_of(e).map(|a| vertex_strain[a]).sum::<f64>() / nodes.len() as f64)
+                        }
                         false => Volumetric::Cell,
                     };
                     let r = el.offset[e]..el.offset[e + 1];
@@ -116,16 +116,23 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
         });
     if nodal {
         let pressure = &*pressure;
-        vertex_pressure.par_iter_mut().with_min_len(MIN_LEN).enumerate().for_each(|(a, q)| *q = vertex_mean(pressure, a));
+        vertex_pressure
+            .par_iter_mut()
+            .with_min_len(MIN_LEN)
+            .enumerate()
+            .for_each(|(a, q)| *q = vertex_mean(pressure, a));
         let vertex_pressure = &*vertex_pressure;
-        f_elem.par_chunks_mut(ELEMENT_SLOT).with_min_len(MIN_LEN).enumerate().filter(|(e, _)| cells.nodal[*e]).for_each(
-            |(e, f_e)| {
+        f_elem
+            .par_chunks_mut(ELEMENT_SLOT)
+            .with_min_len(MIN_LEN)
+            .enumerate()
+            .filter(|(e, _)| cells.nodal[*e])
+            .for_each(|(e, f_e)| {
                 let nodes = el.corners(e);
                 let mean = vertex_of(e).map(|a| vertex_pressure[a]).sum::<f64>() / nodes.len() as f64;
                 let r = el.offset[e]..el.offset[e + 1];
                 add_pressure_force(&el.grad[r], el.volume[e] * mean, &mut f_e[..3 * nodes.len()]);
-            },
-        );
+            });
     }
 }
 

@@ -98,11 +98,7 @@ pub fn compression(strength: RockStrength, confinement: f64, steps: usize, d_axi
         let s = strength.tan_phi.atan().sin();
         (1.0 + s) / (1.0 - s)
     };
-    CompressionLimit {
-        confinement,
-        axial: -szz,
-        limit: confinement * n_phi + 2.0 * strength.cohesion * n_phi.sqrt(),
-    }
+    CompressionLimit { confinement, axial: -szz, limit: confinement * n_phi + 2.0 * strength.cohesion * n_phi.sqrt() }
 }
 
 /// A load-displacement curve under a prescribed displacement: FLAC's
