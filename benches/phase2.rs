@@ -26,7 +26,7 @@ impl Watch for Quiet {}
 fn phase2(c: &mut Criterion) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let (mut red, elastic_steps) = slip_surface_reduction(root, true).expect("the slip-surface case's elastic phase");
-    let (first, _) = red.trial(1.0, &mut Quiet).expect("phase 2 runs");
+    let first = red.trial(1.0, &mut Quiet).expect("phase 2 runs").trial;
     eprintln!(
         "phase2/slope_slip_block: elastic {elastic_steps} steps; phase 2 {:?} after {} steps",
         first.outcome, first.steps
@@ -35,7 +35,7 @@ fn phase2(c: &mut Criterion) {
     group.sample_size(10).warm_up_time(Duration::from_secs(2)).measurement_time(Duration::from_secs(15));
     group.bench_function("slope_slip_block", |b| {
         b.iter(|| {
-            let (t, _) = red.trial(1.0, &mut Quiet).expect("phase 2 runs");
+            let t = red.trial(1.0, &mut Quiet).expect("phase 2 runs").trial;
             assert_eq!(t.steps, first.steps, "phase 2 is deterministic");
             t
         })

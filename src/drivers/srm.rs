@@ -86,6 +86,14 @@ impl Trial {
     }
 }
 
+/// One trial and what it leaves: the displacement since the elastic state
+/// and, with plastic blocks, the state of every element.
+pub struct TrialRun {
+    pub trial: Trial,
+    pub since: Vec<f64>,
+    pub cells: Option<Vec<CellPlastic>>,
+}
+
 /// What the strength reduction found (`srm.json`).
 #[derive(Debug, Clone, Serialize)]
 pub struct SrmResult {
@@ -253,11 +261,7 @@ impl Reduction {
     /// Phase 2 with every breakable strength divided by `factor`; returns the
     /// trial, the displacement since the elastic state and the plastic
     /// blocks (if any).
-    pub fn trial(
-        &mut self,
-        factor: f64,
-        watch: &mut dyn Watch,
-    ) -> Result<(Trial, Vec<f64>, Option<Vec<CellPlastic>>), Error> {
+    pub fn trial(&mut self, factor: f64, watch: &mut dyn Watch) -> Result<TrialRun, Error> {
         let t = std::time::Instant::now();
         let (started_from, mut state) = match &self.stable {
             Some((f, end)) if self.start == TrialStart::Warm && *f < factor => (Some(*f), end.clone()),
@@ -286,7 +290,7 @@ impl Reduction {
         if trial.stable() && self.stable.as_ref().is_none_or(|(f, _)| *f < factor) {
             self.stable = Some((factor, state));
         }
-        Ok((trial, since, cells))
+        Ok(TrialRun { trial, since, cells })
     }
 
     /// The step budget of one trial.
@@ -316,7 +320,7 @@ pub fn run_srm_from(
     type Outcome = (bool, (Vec<f64>, Option<Vec<CellPlastic>>));
     let mut run = |f: f64, trials: &mut Vec<Trial>, progress: &mut dyn FnMut(SrmProgress)| -> Result<Outcome, Error> {
         progress(SrmProgress::TrialStart(f));
-        let (t, since, cells) = red.trial(f, &mut Forward(progress))?;
+        let TrialRun { trial: t, since, cells } = red.trial(f, &mut Forward(progress))?;
         progress(SrmProgress::TrialEnd(&t));
         trials.push(t);
         Ok((t.stable(), (since, cells)))

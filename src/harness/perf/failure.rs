@@ -110,7 +110,7 @@ pub fn phase2_figure(root: &Path, progress: &mut dyn FnMut(&str)) -> Result<Phas
         progress(&format!("slip-surface slope: phase 2, {masses} masses"));
         let (mut red, elastic_steps) = slip_surface_reduction(root, block_mass)?;
         let t = Instant::now();
-        let (trial, _, _) = red.trial(1.0, &mut Quiet)?;
+        let trial = red.trial(1.0, &mut Quiet)?.trial;
         let seconds = t.elapsed().as_secs_f64();
         let run = Phase2Run {
             block_mass,
