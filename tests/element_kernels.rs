@@ -6,7 +6,7 @@ mod common;
 
 use cdem::mesh::shape::{check_cell, cross, dot, CellKind, Decomposition};
 use cdem::physics::element::{
-    element_force, element_operators, element_stress, pack_symmetric, packed_entry, packed_len,
+    element_force, element_operators, element_stress, pack_symmetric, packed_entry, packed_len, unpack_symmetric,
 };
 use common::{perturbed, rock, UNIT_HEX, UNIT_PRISM};
 
