@@ -22,7 +22,7 @@ fn one_plastic_hexahedron_carries_the_mohr_coulomb_limit_in_plane_strain_compres
 #[test]
 fn the_elastic_plastic_element_is_its_mixed_stiffness() {
     use cdem::mesh::shape::CellKind;
-    use cdem::physics::element::{element_force, element_operators};
+    use cdem::physics::element::{element_force, element_operators, pack_symmetric};
     use cdem::physics::material::{Material, MaterialLaw, YoungPoisson};
     use cdem::physics::mohr_coulomb::MohrCoulomb;
     use cdem::physics::plastic::{plastic_element_force, plastic_operator, TetPlastic, Volumetric, MAX_TETS};
@@ -56,7 +56,7 @@ fn the_elastic_plastic_element_is_its_mixed_stiffness() {
         let nodes: Vec<u32> = (0..n as u32).collect();
         let u: Vec<f64> = (0..3 * n).map(|k| 1e-4 * ((k as f64) * 0.77).sin()).collect();
         let mut want = vec![0.0; 3 * n];
-        element_force(&ops.k, &nodes, &u, &mut want);
+        element_force(&pack_symmetric(&ops.k, n), &nodes, &u, &mut want);
         let mut got = vec![0.0; 3 * n];
         let mut hist = [TetPlastic::default(); MAX_TETS];
         let tets = plastic_operator(kind, &corners);

@@ -82,6 +82,15 @@ pub fn scene_number<'a>(s: &'a mut Scene, key: &str) -> Result<&'a mut f64, Unkn
             "density" => Some(&mut m.density),
             _ => None,
         }),
+        [("material", Some(i)), ("strength", None), (f, None)] => {
+            s.material.get_mut(*i).and_then(|m| m.strength.as_mut()).and_then(|st| match *f {
+                "cohesion" => Some(&mut st.cohesion),
+                "friction_angle" => Some(&mut st.friction_angle),
+                "tensile" => st.tensile.as_mut(),
+                "dilation_angle" => Some(&mut st.dilation_angle),
+                _ => None,
+            })
+        }
         [("joints", None), (f, None)] => match *f {
             "normal_modulus" => s.joints.normal_modulus.as_mut(),
             "shear_modulus" => s.joints.shear_modulus.as_mut(),
