@@ -429,7 +429,8 @@ pub fn contour_panels(
                 .map_err(|e| plot_err(path, e))?;
         }
     }
-    colour_bar(path, &bar, &format!("{label} ({unit})"), &scale)?;
+    let bar_label = if unit.is_empty() { label.to_string() } else { format!("{label} ({unit})") };
+    colour_bar(path, &bar, &bar_label, &scale)?;
     for (i, note) in style.notes.iter().enumerate() {
         foot_area
             .draw(&Text::new(note.clone(), (20, 4 + 24 * i as i32), ("sans-serif", 16).into_font()))
