@@ -138,8 +138,9 @@ pub fn cell_volumetric_strain(topo: &TetTopology, tets: &[TetB], nodes: &[u32], 
     tet_strains(topo, tets, &point_displacements(topo, nodes, u)).1
 }
 
-/// Adds a cell's pressure force `P g_c` (`P` = volume times mean stress, N
-/// m... per unit gradient) to its corner forces `f_e`.
+/// Adds a cell's pressure force `P g_c` to its corner forces `f_e`: `P` is
+/// the cell's volume times the mean stress it carries (N m), `g_c` its
+/// volume-averaged corner gradients (1/m).
 pub fn add_pressure_force(grad: &[[f64; 3]], pressure: f64, f_e: &mut [f64]) {
     for (fc, g) in f_e.chunks_exact_mut(3).zip(grad) {
         for i in 0..3 {
