@@ -201,7 +201,6 @@ impl Model {
             return None;
         }
         let el = &self.elements;
-        let stress = self.element_stresses(u);
         Some(
             (0..el.len())
                 .map(|e| {
@@ -219,7 +218,7 @@ impl Model {
                             },
                             &rock.history[e],
                         ),
-                        None => CellPlastic { stress: stress[e], ..CellPlastic::default() },
+                        None => CellPlastic { stress: self.element_stress(e, u), ..CellPlastic::default() },
                     }
                 })
                 .collect(),
@@ -255,12 +254,13 @@ impl Model {
     /// Stress of every element (Pa, Voigt xx yy zz yz xz xy) for displacements
     /// `u`, every element elastic (phase 1).
     pub fn element_stresses(&self, u: &[f64]) -> Vec<[f64; 6]> {
+        (0..self.elements.len()).map(|e| self.element_stress(e, u)).collect()
+    }
+
+    /// Stress of element `e`, elastic (see [`Self::element_stresses`]).
+    pub fn element_stress(&self, e: usize, u: &[f64]) -> [f64; 6] {
         let el = &self.elements;
-        (0..el.len())
-            .map(|e| {
-                let r = el.offset[e]..el.offset[e + 1];
-                element_stress(&el.grad[r.clone()], &el.nodes[r], u, self.materials[el.material[e] as usize].lame)
-            })
-            .collect()
+        let r = el.offset[e]..el.offset[e + 1];
+        element_stress(&el.grad[r.clone()], &el.nodes[r], u, self.materials[el.material[e] as usize].lame)
     }
 }

@@ -32,10 +32,9 @@
 //! mapping each step, `eps_t^p += D^-1 (sigma_trial - sigma_t)`.
 
 use super::elasticity::Lame;
-use super::element::tet_gradients;
 use super::mohr_coulomb::{compliance, MohrCoulomb, RockStrength, Yield};
-use super::tet_operator::{corner_forces, point_displacements, TetTopology};
-use crate::mesh::shape::{CellKind, Decomposition, MAX_POINTS};
+use super::tet_operator::{corner_forces, point_displacements, scaled_gradients, TetTopology};
+use crate::mesh::shape::{CellKind, MAX_POINTS};
 
 /// Most sub-tetrahedra of a cell (a hexahedron's 24).
 pub const MAX_TETS: usize = 24;
@@ -64,22 +63,7 @@ pub struct TetB {
 
 /// The operators of a cell's tetrahedra, in [`TetTopology::tets`] order.
 pub fn plastic_operator(kind: CellKind, corners: &[[f64; 3]]) -> Vec<TetB> {
-    let dec = Decomposition::of(kind);
-    let points = dec.points(corners);
-    dec.tets
-        .iter()
-        .map(|t| {
-            let (g, v) = tet_gradients([points[t[0]], points[t[1]], points[t[2]], points[t[3]]]);
-            let s = v.sqrt();
-            let mut b = [0.0; 9];
-            for k in 0..3 {
-                for i in 0..3 {
-                    b[3 * k + i] = s * g[k][i];
-                }
-            }
-            TetB { b, sqrt_v: s }
-        })
-        .collect()
+    scaled_gradients(kind, corners).map(|(b, sqrt_v)| TetB { b, sqrt_v }).collect()
 }
 
 /// Each tetrahedron's strain (Voigt, engineering shear) from the point
@@ -123,6 +107,16 @@ pub enum Volumetric {
     /// per cell still locks: P1/P0); the caller applies the pressure force
     /// ([`add_pressure_force`]) from the vertices' mean pressures.
     Nodal(f64),
+}
+
+impl Volumetric {
+    /// The volumetric strain the tetrahedra share, given the cell's own.
+    fn value(self, own: f64) -> f64 {
+        match self {
+            Volumetric::Cell => own,
+            Volumetric::Nodal(e) => e,
+        }
+    }
 }
 
 /// What one plastic cell's step gives the nodal average: the volumetric
@@ -169,10 +163,7 @@ pub fn plastic_element_force(
 ) -> CellStep {
     let d = point_displacements(topo, nodes, u);
     let (eps, own) = tet_strains(topo, tets, &d);
-    let e = match volumetric {
-        Volumetric::Cell => own,
-        Volumetric::Nodal(e) => e,
-    };
+    let e = volumetric.value(own);
     let mut f = [[0.0; 3]; MAX_POINTS];
     let (mut pressure, mut volume) = (0.0, 0.0); // sum_t V_t p_t, sum_t V_t
     for (((t, op), eps), h) in topo.tets.iter().zip(tets).zip(&eps).zip(hist.iter_mut()) {
@@ -236,10 +227,7 @@ pub fn cell_plastic(
 ) -> CellPlastic {
     let d = point_displacements(topo, nodes, u);
     let (eps, own) = tet_strains(topo, tets, &d);
-    let e = match volumetric {
-        Volumetric::Cell => own,
-        Volumetric::Nodal(e) => e,
-    };
+    let e = volumetric.value(own);
     let mut out = CellPlastic::default();
     let mut v = 0.0;
     for ((op, eps), h) in tets.iter().zip(&eps).zip(hist) {

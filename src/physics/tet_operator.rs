@@ -75,23 +75,26 @@ impl TetTopology {
 /// sub-tetrahedron in [`TetTopology::tets`] order.
 pub fn tet_operator(kind: CellKind, corners: &[[f64; 3]]) -> Result<Vec<[f64; 9]>, CellDefect> {
     check_cell(kind, corners)?;
+    Ok(scaled_gradients(kind, corners).map(|(b, _)| b).collect())
+}
+
+/// Per sub-tetrahedron, in [`TetTopology::tets`] order: `b_k = sqrt(V_t)
+/// grad N_k` of vertices 0, 1, 2 (as [`tet_operator`], the cell unchecked)
+/// and `sqrt(V_t)`.
+pub fn scaled_gradients(kind: CellKind, corners: &[[f64; 3]]) -> impl Iterator<Item = ([f64; 9], f64)> {
     let dec = Decomposition::of(kind);
     let points = dec.points(corners);
-    Ok(dec
-        .tets
-        .iter()
-        .map(|t| {
-            let (g, v) = tet_gradients([points[t[0]], points[t[1]], points[t[2]], points[t[3]]]);
-            let s = v.sqrt();
-            let mut b = [0.0; 9];
-            for k in 0..3 {
-                for i in 0..3 {
-                    b[3 * k + i] = s * g[k][i];
-                }
+    dec.tets.into_iter().map(move |t| {
+        let (g, v) = tet_gradients([points[t[0]], points[t[1]], points[t[2]], points[t[3]]]);
+        let s = v.sqrt();
+        let mut b = [0.0; 9];
+        for k in 0..3 {
+            for i in 0..3 {
+                b[3 * k + i] = s * g[k][i];
             }
-            b
-        })
-        .collect())
+        }
+        (b, s)
+    })
 }
 
 /// Eq. 12 in per-tetrahedron form: writes `f_e = K_e u_e` (`3n` values,
