@@ -2,7 +2,7 @@
 
 use cdem::harness::registry as reg;
 use cdem::harness::report::record;
-use cdem::harness::suite::plastic::element_limit_row;
+use cdem::harness::suite::plastic::{column_rows, element_limit_row};
 use cdem::physics::material::RockStrength;
 
 #[test]
@@ -14,6 +14,32 @@ fn one_plastic_hexahedron_carries_the_mohr_coulomb_limit_in_plane_strain_compres
         assert!(r.error() < reg::TOL_PLASTIC_ELEMENT, "{r:?}");
     }
     assert!(row.passed(), "{:?}", row.defect);
+}
+
+/// The unconfined column of eight plastic hexahedra joined by stiff springs,
+/// its top moved at a constant rate: the axial stress rises elastically and
+/// stays at the uniaxial strength in compression, at the cut-off in tension.
+#[test]
+fn an_unconfined_plastic_column_carries_its_uniaxial_strength_and_its_tension_cut_off() {
+    let rows = column_rows().expect("column");
+    for (row, curve) in &rows {
+        let (d, r) = curve.points[curve.points.len() - 1];
+        println!(
+            "{}: plateau {:.3} kPa vs {:.3} kPa ({:+.2e}), last reading {d} m {r:.1} N, flat to {:.1e}",
+            row.id,
+            row.ours / 1e3,
+            row.reference / 1e3,
+            row.ours / row.reference - 1.0,
+            curve.plateau_spread(5)
+        );
+        // The first reading is elastic (well below the limit): a curve, not a constant.
+        assert!(curve.points[0].1.abs() / curve.area < 0.5 * row.reference, "{:?}", curve.points[0]);
+    }
+    let checks: Vec<_> = rows.iter().map(|r| r.0.clone()).collect();
+    record("plasticity_column", &checks);
+    for c in &checks {
+        assert!(c.passed(), "{}: {:?}", c.id, c.defect);
+    }
 }
 
 /// Elastic, the plastic element's forces (deviatoric per tetrahedron plus

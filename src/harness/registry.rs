@@ -271,8 +271,24 @@ pub const TOPPLING: Case = Case {
     source: JOINTS_MD,
 };
 
+/// The unconfined plastic column pushed down (uniaxial compression).
+pub const PLASTIC_COLUMN_COMPRESSION: Case = Case {
+    name: "plastic column, uniaxial compression",
+    input: "verification/plastic/column/column-compression.toml",
+    checks: "the plateau of the top's reaction against 2 c sqrt(N_phi) within 0.2 % (tests/plasticity.rs)",
+    source: PLASTIC_MD,
+};
+
+/// The unconfined plastic column pulled up (uniaxial tension, the cut-off).
+pub const PLASTIC_COLUMN_TENSION: Case = Case {
+    name: "plastic column, uniaxial tension",
+    input: "verification/plastic/column/column-tension.toml",
+    checks: "the plateau of the top's reaction against the tension cut-off T within 1e-9 (tests/plasticity.rs)",
+    source: PLASTIC_MD,
+};
+
 /// Every case above (the extreme suite is [`extreme_cases`]).
-pub const CASES: [Case; 17] = [
+pub const CASES: [Case; 19] = [
     COLUMN,
     COLUMN_MERGED,
     SLOPE,
@@ -290,6 +306,8 @@ pub const CASES: [Case; 17] = [
     WEDGE_SYMMETRIC,
     WEDGE_GENERAL,
     TOPPLING,
+    PLASTIC_COLUMN_COMPRESSION,
+    PLASTIC_COLUMN_TENSION,
 ];
 
 // ---------------------------------------------------------------------------
@@ -917,6 +935,8 @@ pub const ROWS: &[RowSpec] = &[
     spec("srm/block-cohesion", "SRM block on plane, theta 25, phi 20, c 5 kPa", "FS (strength reduction)", Asserted(TOL_SRM_BLOCK), SRM_MD, "tests/srm.rs"),
     // The plastic blocks' Mohr-Coulomb limit (tests/plasticity.rs).
     spec("plastic/element-limit", "one plastic hexahedron, plane-strain compression, c 100 kPa, phi 30, sigma_3 0 / 100 kPa / 1 MPa", "axial stress at the limit vs sigma_3 N_phi + 2 c sqrt(N_phi) (largest error)", Asserted(TOL_PLASTIC_ELEMENT), PLASTIC_MD, "tests/plasticity.rs").with_reference(0.0),
+    spec("plastic/column-compression", "plastic column 1 x 1 x 4 m (8 hexahedra), free sides, c 100 kPa, phi 30, T 50 kPa, top pushed down at a constant rate", "plateau of the axial stress (Pa) vs the uniaxial strength 2 c sqrt(N_phi)", Asserted(TOL_PLASTIC_COLUMN_COMPRESSION), PLASTIC_MD, "tests/plasticity.rs"),
+    spec("plastic/column-tension", "plastic column 1 x 1 x 4 m (8 hexahedra), free sides, c 100 kPa, phi 30, T 50 kPa, top pulled up at a constant rate", "plateau of the axial stress (Pa) vs the tension cut-off T", Asserted(TOL_PLASTIC_COLUMN_TENSION), PLASTIC_MD, "tests/plasticity.rs"),
     // Joint sets: the rock-slope mechanisms against their closed forms (tests/joints.rs).
     spec("joints/plane-srm", "plane failure, dry tension crack (Hoek & Bray)", "FS (strength reduction) vs closed form", Asserted(TOL_JOINTS_SRM), JOINTS_MD, "tests/joints.rs"),
     spec("joints/wedge-srm", "symmetric wedge, 3D (Hoek & Bray wedge factor)", "FS (strength reduction) vs closed form", Asserted(TOL_JOINTS_SRM), JOINTS_MD, "tests/joints.rs"),
@@ -1345,6 +1365,28 @@ pub const BLOCK_SRM_COHESION_SET: BlockOnPlane =
 pub const TOL_PLASTIC_ELEMENT: f64 = 1e-9;
 /// The confining stresses of that check (Pa).
 pub const PLASTIC_ELEMENT_CONFINEMENTS: [f64; 3] = [0.0, 1e5, 1e6];
+
+/// The plastic column's strength (`verification/plastic/column/*.toml`):
+/// c = 100 kPa, phi = 30 deg (N_phi = 3), tension cut-off T = 50 kPa.
+pub const PLASTIC_COLUMN_COHESION: f64 = 100e3;
+pub const PLASTIC_COLUMN_FRICTION_DEG: f64 = 30.0;
+pub const PLASTIC_COLUMN_TENSILE: f64 = 50e3;
+/// The column's uniaxial compressive strength 2 c sqrt(N_phi) =
+/// 2 c cos(phi) / (1 - sin(phi)) (Pa): 346.410 kPa.
+pub fn plastic_column_ucs() -> f64 {
+    let s = PLASTIC_COLUMN_FRICTION_DEG.to_radians().sin();
+    2.0 * PLASTIC_COLUMN_COHESION * ((1.0 + s) / (1.0 - s)).sqrt()
+}
+/// The column's top moved 40 mm (1 % strain) at a constant rate, over
+/// 40 x 800 steps: the plateau is the mean of the last 5 readings.
+pub const PLASTIC_COLUMN_LOADING: (f64, usize, usize) = (0.04, 40, 800);
+/// Compression plateau against the UCS: 0.2 %. The error is the damping's
+/// share of the reaction, proportional to the loading rate (measured +0.54 %
+/// at 40 x 100 steps, +0.14 % at 40 x 400, +0.07 % at 40 x 800).
+pub const TOL_PLASTIC_COLUMN_COMPRESSION: f64 = 2e-3;
+/// Tension plateau against T: 1e-9 (measured 1e-15: the cut-off is a plane,
+/// reached at every rate).
+pub const TOL_PLASTIC_COLUMN_TENSION: f64 = 1e-9;
 
 /// `cdem srm` on the block against the analytic FS: 1 % (the bracket is
 /// 0.01 wide, so its midpoint is within 0.4 % of any FS inside it).

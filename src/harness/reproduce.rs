@@ -146,6 +146,8 @@ fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Err
     }
     progress("plastic blocks: the Mohr-Coulomb limit of one hexahedron");
     rep.checks.push(suite::plastic::element_limit_row().0);
+    progress("plastic blocks: the unconfined column in compression and tension");
+    rep.checks.extend(suite::plastic::column_rows()?.into_iter().map(|r| r.0));
     joint_sets(rep, progress)?;
     progress("analytic ensemble");
     rep.checks.extend(suite::ensemble::segment(root)?.rows);

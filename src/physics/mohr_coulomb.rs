@@ -147,7 +147,10 @@ impl MohrCoulomb {
             return (trial, Yield::Elastic);
         }
         let values = principal_values(&trial);
-        let scale = values.iter().fold(self.k.abs().max(self.tensile.abs()), |a, v| a.max(v.abs()));
+        // The cut-off is infinite without one (phi = 0 and no `tensile`): it
+        // does not set the scale, or every trial would pass as elastic.
+        let cut = if self.tensile.is_finite() { self.tensile.abs() } else { 0.0 };
+        let scale = values.iter().fold(self.k.abs().max(cut), |a, v| a.max(v.abs()));
         let tol = 1e-12 * scale.max(f64::MIN_POSITIVE);
         if self.violation(values) <= tol {
             return (trial, Yield::Elastic);
@@ -183,6 +186,10 @@ struct Plane {
 /// non-negative and the result is admissible; `true` if a tension plane is
 /// active.
 fn return_to(planes: &[Plane; PLANES], set: &[usize], s: [f64; 3], tol: f64) -> Option<([f64; 3], bool)> {
+    // No cut-off (an infinite plane) is never active.
+    if set.iter().any(|&p| !planes[p].k.is_finite()) {
+        return None;
+    }
     let n = set.len();
     let mut a = [[0.0; 3]; 3];
     let mut rhs = [0.0; 3];
@@ -451,6 +458,23 @@ mod tests {
         let mc = rock(1e5, 30.0, 1e5, 0.0);
         let s = [-2e5, -1e5, -1.5e5, 1e4, 0.0, -2e4];
         assert_eq!(mc.return_map(lame(), s), (s, Yield::Elastic));
+    }
+
+    #[test]
+    fn tresca_without_a_cut_off_yields() {
+        // phi = 0 and no tension cut-off: the cut-off is infinite. It once
+        // set the tolerance's scale, and every trial passed as elastic.
+        // The trials: the main plane, the compression and the extension edge.
+        let mc = rock(1e5, 0.0, f64::INFINITY, 0.0);
+        for trial in
+            [[-1e6, -5e5, -2e5, 0.0, 0.0, 0.0], [-1e6, -1e6, -2e5, 0.0, 0.0, 0.0], [-1e6, -2e5, -2e5, 0.0, 0.0, 0.0]]
+        {
+            let (s, kind) = mc.return_map(lame(), trial);
+            assert_eq!(kind, Yield::Shear);
+            let p = principal_of(&s);
+            assert!(p.iter().all(|v| v.is_finite()), "{trial:?}: {p:?}");
+            assert!((p[0] - p[2] - 2e5).abs() < 1e-6, "{trial:?}: {p:?}");
+        }
     }
 
     #[test]

@@ -12,7 +12,7 @@ If (!Exists(refine))
 EndIf
 H = 10;
 t = 1.25;          // slab thickness (y), about one element (H/8)
-h = 1.25;          // element size of the unstructured shapes (H/8)
+h = 1.25 / refine; // element size of the unstructured shapes (H/8 at refine = 1)
 x0 = 0; x1 = 32; zb = 0;
 has_left = 0;      // the toe is the section's left end
 gx[] = {0, 20, 32};
