@@ -2,7 +2,7 @@
 
 use cdem::harness::registry as reg;
 use cdem::harness::report::record;
-use cdem::harness::suite::plastic::{column_rows, element_limit_row};
+use cdem::harness::suite::plastic::{column_rows, element_limit_row, gl1_hex_row, prandtl_row};
 use cdem::physics::material::RockStrength;
 
 #[test]
@@ -40,6 +40,47 @@ fn an_unconfined_plastic_column_carries_its_uniaxial_strength_and_its_tension_cu
     for c in &checks {
         assert!(c.passed(), "{}: {:?}", c.id, c.defect);
     }
+}
+
+/// Prandtl's rough strip footing on a Tresca layer: the footing pressure
+/// rises to a plateau; reported against (2 + pi) c (it errs high).
+#[test]
+fn prandtls_footing_reaches_a_plateau_near_its_bearing_capacity() {
+    let (row, curve) = prandtl_row().expect("prandtl");
+    for (d, r) in &curve.points {
+        println!("{d:.4} m: {:.2} kPa", -r / curve.area / 1e3);
+    }
+    println!(
+        "{}: {:.2} kPa vs {:.2} kPa ({:+.2} %), flat to {:.1e}",
+        row.id,
+        row.ours / 1e3,
+        row.reference / 1e3,
+        100.0 * (row.ours / row.reference - 1.0),
+        curve.plateau_spread(3)
+    );
+    // A plateau, not a locked element: the last three readings within 0.5 %.
+    assert!(curve.plateau_spread(3) < 5e-3, "no plateau: {:?}", curve.points);
+    record("plasticity_prandtl", std::slice::from_ref(&row));
+}
+
+/// Griffiths & Lane's slope with plastic blocks: the factor of safety where
+/// nobody drew the slip surface, against the chart's.
+#[test]
+fn griffiths_and_lanes_slope_with_plastic_blocks_finds_its_factor_of_safety() {
+    let run = gl1_hex_row().expect("gl1");
+    for t in &run.result.trials {
+        println!("F = {:.4}: {:?} after {} steps, {:.3e} m", t.factor, t.outcome, t.steps, t.max_displacement);
+    }
+    println!(
+        "{}: FS {:.4} {:?} vs {:.3} (published FE {})",
+        run.row.id,
+        run.row.ours,
+        run.result.bracket,
+        run.row.reference,
+        reg::GL1_FE_FS
+    );
+    record("plasticity_slope", std::slice::from_ref(&run.row));
+    assert!(run.row.passed(), "{:?}", run.row.defect);
 }
 
 /// Elastic, the plastic element's forces (deviatoric per tetrahedron plus

@@ -70,8 +70,15 @@ fn sliding_is_checked_on_its_cadence_and_after_the_tolerance() {
     let reference = vec![1.0; 3 * model.n_nodes()];
     let weights = model.mass.clone();
     // The fixed bound alone (the rate rule needs more windows than the run has).
-    let sliding =
-        Sliding { reference: &reference, weights: &weights, window: 7, windows: 1000, floor: 0.0, displacement: 0.5 };
+    let sliding = Sliding {
+        reference: &reference,
+        weights: &weights,
+        window: 7,
+        windows: 1000,
+        floor: 0.0,
+        displacement: 0.5,
+        travel: 0.0,
+    };
     let r = relax(
         &mut solver,
         &model,
@@ -107,6 +114,7 @@ fn relax_with_rate_rule(solver: &mut Solver, model: &Model, state: &mut State, t
         windows: 3,
         floor: 0.0,
         displacement: f64::INFINITY,
+        travel: 0.0,
     };
     relax(solver, model, state, &StopRules { sliding: Some(rule), ..rules(tol, 100_000) }, &mut unobserved).unwrap()
 }

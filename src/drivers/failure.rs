@@ -61,6 +61,16 @@ pub const SLIDING_WINDOWS: usize = 3;
 /// they slide within 10,000 steps and no verification case moved
 /// (docs/method.md 2.9).
 pub const SLIDING_FLOOR: f64 = 1e-4;
+/// With plastic blocks the rate rule decides only after the largest
+/// displacement since the elastic state has reached this fraction of the
+/// model's height (1 cm on a 10 m slope): near-critical plastic trials creep
+/// at a non-decaying rate for a while as the stresses redistribute, and
+/// without it trials were called sliding after 5.9 mm (ACADS 1(a), F =
+/// 0.9625, against an LEM of 0.985) and 8 mm (Griffiths & Lane refined, F =
+/// 1.3672, against 1.378): conservative, but a call on millimetres
+/// (references/plastic.md, docs/method.md 2.9b). Elastic blocks keep no
+/// such floor: their validated cases slide on 1e-4 m.
+pub const PLASTIC_SLIDING_TRAVEL: f64 = 1e-3;
 
 /// The plan of phase 2 (and of every strength-reduction trial): dynamic
 /// relaxation with the masses `[failure] block_mass` asks for, the budget
@@ -85,10 +95,24 @@ pub fn sliding_rule<'a>(model: &'a Model, u_elastic: &'a [f64], params: &Failure
         windows: SLIDING_WINDOWS,
         floor: 0.0,
         displacement: params.sliding_displacement.unwrap_or(f64::INFINITY),
+        travel: match model.has_plastic_blocks() {
+            true => PLASTIC_SLIDING_TRAVEL * model_height(model),
+            false => 0.0,
+        },
     };
     let zero = vec![0.0; u_elastic.len()];
     rule.floor = SLIDING_FLOOR * Sliding { reference: &zero, ..rule }.mean_displacement(u_elastic);
     rule
+}
+
+/// The model's extent along z (m).
+fn model_height(model: &Model) -> f64 {
+    let (lo, hi) = model.x0.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x[2]), b.max(x[2])));
+    if hi > lo {
+        hi - lo
+    } else {
+        0.0
+    }
 }
 
 /// Runs phase 2 under `plan` from the elastic `state` (which it advances);

@@ -287,8 +287,24 @@ pub const PLASTIC_COLUMN_TENSION: Case = Case {
     source: PLASTIC_MD,
 };
 
+/// Prandtl's rough strip footing on a weightless Tresca layer (FLAC3D's verification problem).
+pub const PLASTIC_PRANDTL: Case = Case {
+    name: "Prandtl's strip footing, Tresca (phi = 0), 1050 hexahedra",
+    input: "verification/plastic/prandtl/prandtl.toml",
+    checks: "the footing pressure's plateau against (2 + pi) c, reported against 5 % (tests/plasticity.rs)",
+    source: PLASTIC_MD,
+};
+
+/// Griffiths & Lane's example 1 with plastic blocks on structured hexahedra.
+pub const PLASTIC_GL1_HEX: Case = Case {
+    name: "Griffiths & Lane 1999 ex. 1, plastic blocks, 384 hexahedra",
+    input: "verification/plastic/griffiths-lane-1/gl1-hex.toml",
+    checks: "`cdem srm` FS against Bishop & Morgenstern's 1.380 within 5 % (tests/plasticity.rs)",
+    source: PLASTIC_MD,
+};
+
 /// Every case above (the extreme suite is [`extreme_cases`]).
-pub const CASES: [Case; 19] = [
+pub const CASES: [Case; 21] = [
     COLUMN,
     COLUMN_MERGED,
     SLOPE,
@@ -308,6 +324,8 @@ pub const CASES: [Case; 19] = [
     TOPPLING,
     PLASTIC_COLUMN_COMPRESSION,
     PLASTIC_COLUMN_TENSION,
+    PLASTIC_PRANDTL,
+    PLASTIC_GL1_HEX,
 ];
 
 // ---------------------------------------------------------------------------
@@ -937,6 +955,8 @@ pub const ROWS: &[RowSpec] = &[
     spec("plastic/element-limit", "one plastic hexahedron, plane-strain compression, c 100 kPa, phi 30, sigma_3 0 / 100 kPa / 1 MPa", "axial stress at the limit vs sigma_3 N_phi + 2 c sqrt(N_phi) (largest error)", Asserted(TOL_PLASTIC_ELEMENT), PLASTIC_MD, "tests/plasticity.rs").with_reference(0.0),
     spec("plastic/column-compression", "plastic column 1 x 1 x 4 m (8 hexahedra), free sides, c 100 kPa, phi 30, T 50 kPa, top pushed down at a constant rate", "plateau of the axial stress (Pa) vs the uniaxial strength 2 c sqrt(N_phi)", Asserted(TOL_PLASTIC_COLUMN_COMPRESSION), PLASTIC_MD, "tests/plasticity.rs"),
     spec("plastic/column-tension", "plastic column 1 x 1 x 4 m (8 hexahedra), free sides, c 100 kPa, phi 30, T 50 kPa, top pulled up at a constant rate", "plateau of the axial stress (Pa) vs the tension cut-off T", Asserted(TOL_PLASTIC_COLUMN_TENSION), PLASTIC_MD, "tests/plasticity.rs"),
+    spec("plastic/prandtl", "Prandtl's rough strip footing, half model, 1050 hexahedra, Tresca c 0.1 MPa, pushed 60 mm at a constant rate", "plateau of the footing pressure (Pa) vs (2 + pi) c", Reported(Goal::Within(GOAL_PRANDTL)), PLASTIC_MD, "tests/plasticity.rs"),
+    spec("plastic/gl1-hex-srm", "Griffiths & Lane 1999 ex. 1, plastic blocks, 384 structured hexahedra", "FS (strength reduction) vs Bishop & Morgenstern's chart", Asserted(TOL_PLASTIC_SLOPE), PLASTIC_MD, "tests/plasticity.rs"),
     // Joint sets: the rock-slope mechanisms against their closed forms (tests/joints.rs).
     spec("joints/plane-srm", "plane failure, dry tension crack (Hoek & Bray)", "FS (strength reduction) vs closed form", Asserted(TOL_JOINTS_SRM), JOINTS_MD, "tests/joints.rs"),
     spec("joints/wedge-srm", "symmetric wedge, 3D (Hoek & Bray wedge factor)", "FS (strength reduction) vs closed form", Asserted(TOL_JOINTS_SRM), JOINTS_MD, "tests/joints.rs"),
@@ -1387,6 +1407,34 @@ pub const TOL_PLASTIC_COLUMN_COMPRESSION: f64 = 2e-3;
 /// Tension plateau against T: 1e-9 (measured 1e-15: the cut-off is a plane,
 /// reached at every rate).
 pub const TOL_PLASTIC_COLUMN_TENSION: f64 = 1e-9;
+
+/// Prandtl's bearing capacity of a strip footing on a weightless
+/// cohesive frictionless half-space, `q_u = (2 + pi) c`, with the footing's
+/// c = 0.1 MPa (FLAC3D's verification problem; references/plastic.md) (Pa).
+pub const PRANDTL_COHESION: f64 = 0.1e6;
+pub fn prandtl_bearing_capacity() -> f64 {
+    (2.0 + std::f64::consts::PI) * PRANDTL_COHESION
+}
+/// The footing pushed 60 mm at 2.5e-6 m a step (30 readings of 800 steps);
+/// the plateau is the mean of the last 3 readings (54-60 mm). Measured to
+/// 100 mm at 2e-6 m a step: 548.6 kPa at 40 mm, 554.2 at 60, 556.3 at 100.
+pub const PRANDTL_LOADING: (f64, usize, usize) = (0.06, 30, 800);
+/// The Prandtl row's goal: 5 %, the bound for the slopes (FLAC3D's
+/// own error on its zoning was not in the copy of its manual we read).
+pub const GOAL_PRANDTL: f64 = 0.05;
+
+/// Bishop & Morgenstern's chart FS of Griffiths & Lane's example 1 (as
+/// quoted by the xslope set; references/plastic.md).
+pub const GL1_CHART_FS: Reference = Reference {
+    value: 1.380,
+    source: PLASTIC_MD,
+    what: "FS of Griffiths & Lane (1999) example 1 from the Bishop & Morgenstern (1960) charts (as quoted)",
+};
+/// Griffiths & Lane's own FE strength reduction of the same slope (as quoted).
+pub const GL1_FE_FS: f64 = 1.4;
+/// `cdem srm` with plastic blocks against the chart: 5 %, the bound
+/// (measured -0.6 %, on the conservative side).
+pub const TOL_PLASTIC_SLOPE: f64 = 0.05;
 
 /// `cdem srm` on the block against the analytic FS: 1 % (the bracket is
 /// 0.01 wide, so its midpoint is within 0.4 % of any FS inside it).

@@ -148,6 +148,10 @@ fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Err
     rep.checks.push(suite::plastic::element_limit_row().0);
     progress("plastic blocks: the unconfined column in compression and tension");
     rep.checks.extend(suite::plastic::column_rows()?.into_iter().map(|r| r.0));
+    progress("plastic blocks: Prandtl's strip footing (about 2 min)");
+    rep.checks.push(suite::plastic::prandtl_row()?.0);
+    progress("plastic blocks: Griffiths & Lane's slope by strength reduction (about 3 min)");
+    rep.checks.push(suite::plastic::gl1_hex_row()?.row);
     joint_sets(rep, progress)?;
     progress("analytic ensemble");
     rep.checks.extend(suite::ensemble::segment(root)?.rows);

@@ -62,6 +62,10 @@ pub struct Sliding<'a> {
     /// Also sliding when the largest nodal displacement since `reference`
     /// passes this (m); `f64::INFINITY`: no such bound.
     pub displacement: f64,
+    /// The rate rule decides only once the largest nodal displacement since
+    /// `reference` has reached this (m; 0: at once): a trial is not called
+    /// sliding while its mass has moved only millimetres.
+    pub travel: f64,
 }
 
 /// The running state of the sliding rule.
@@ -102,7 +106,7 @@ impl Sliding<'_> {
             if !first && increment > self.floor && increment >= watch.last_increment { watch.rising + 1 } else { 0 };
         watch.last_mean = mean;
         watch.last_increment = increment;
-        watch.rising >= self.windows
+        watch.rising >= self.windows && (self.travel <= 0.0 || max_displacement_since(u, self.reference) >= self.travel)
     }
 }
 

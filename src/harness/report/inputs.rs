@@ -38,6 +38,8 @@ pub const DECLARED: &[(&str, &[&str])] = &[
     ("plastic/", &[]),
     ("plastic/column-compression", &["verification/plastic/column/column-compression.toml"]),
     ("plastic/column-tension", &["verification/plastic/column/column-tension.toml"]),
+    ("plastic/prandtl", &["verification/plastic/prandtl/prandtl.toml"]),
+    ("plastic/gl1-hex-srm", &["verification/plastic/griffiths-lane-1/gl1-hex.toml"]),
     ("slip/", &["verification/cases/slope-slip/slope-slip.toml", "verification/lem/paper-slope.toml", "tests/snapshots/slip_surface__ki_segments_cdem_springs.snap"]),
     ("slope-failure/", &["verification/cases/slope-slip/slope-slip.toml", "verification/cases/slope-slip/slope-slip-stable.toml", "tests/snapshots/progressive_slope__slope_failure_sequence.snap"]),
     ("wulong/", &["verification/cases/wulong/wulong.toml", "tests/snapshots/wulong__wulong_failure_sequence.snap"]),

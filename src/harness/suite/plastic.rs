@@ -219,3 +219,41 @@ pub fn column_rows() -> Result<Vec<(crate::harness::report::Check, LoadCurve)>, 
     }
     Ok(rows)
 }
+
+/// The row `plastic/prandtl`: the footing pressure of Prandtl's strip
+/// footing ([`load_curve`] on `footing` at the registry's rate) against
+/// `(2 + pi) c`, and the curve.
+pub fn prandtl_row() -> Result<(crate::harness::report::Check, LoadCurve), crate::error::Error> {
+    use crate::harness::registry as reg;
+    let (total, increments, steps) = reg::PRANDTL_LOADING;
+    let curve = load_curve(&reg::PLASTIC_PRANDTL.scene()?, "footing", -total, increments, steps)?;
+    let row = reg::row("plastic/prandtl").value(-curve.plateau(3), reg::prandtl_bearing_capacity(), curve.seconds);
+    Ok((row, curve))
+}
+
+/// One homogeneous slope with plastic blocks: the reduction and its row.
+pub struct SlopeRun {
+    pub result: crate::drivers::SrmResult,
+    pub model: crate::model::Model,
+    pub row: crate::harness::report::Check,
+}
+
+/// The row `plastic/gl1-hex-srm`: `cdem srm` on Griffiths & Lane's example
+/// 1 (plastic blocks, structured hexahedra) against Bishop & Morgenstern's
+/// chart. The row fails (with the reason) without a bracket at most
+/// [`crate::harness::suite::srm::BRACKET_WIDTH`] wide; its upper end may be
+/// Undecided (counted unstable, as FLAC counts a trial that does not
+/// converge): `srm.json` and the test say which.
+pub fn gl1_hex_row() -> Result<SlopeRun, crate::error::Error> {
+    use crate::harness::registry as reg;
+    let t0 = std::time::Instant::now();
+    let (result, model) = crate::drivers::run_srm(&reg::PLASTIC_GL1_HEX.scene()?, &mut |_| {})?;
+    let reference = reg::GL1_CHART_FS.value;
+    let mut row =
+        reg::row("plastic/gl1-hex-srm").value(result.fs.unwrap_or(f64::NAN), reference, t0.elapsed().as_secs_f64());
+    match result.bracket {
+        [Some(lo), Some(hi)] if hi - lo <= crate::harness::suite::srm::BRACKET_WIDTH + 1e-12 => {}
+        b => row = row.with_defect(format!("no bracket of width {}: {b:?}", crate::harness::suite::srm::BRACKET_WIDTH)),
+    }
+    Ok(SlopeRun { result, model, row })
+}
