@@ -39,7 +39,7 @@ enum Command {
     /// surface nobody drew. Elastic blocks with breakable interfaces (a drawn slip surface, real
     /// joints) fail only along those interfaces. Elastic blocks with every element interface
     /// breakable interlock: that FS is biased high (+4 % to +74 % on six published homogeneous
-    /// slopes, references/plastic.md), and srm says so.
+    /// slopes, references/srm.md), and srm says so.
     #[command(verbatim_doc_comment)]
     Srm {
         scene: PathBuf,

@@ -149,12 +149,12 @@ pub struct Answer {
 /// The interlocking bias of elastic blocks that part only along their faces
 /// when every element interface is breakable at the rock mass strength,
 /// measured against published FE strength reduction and our LEM on
-/// six published homogeneous slopes (references/plastic.md, "The
-/// interfaces-only model").
+/// six published homogeneous slopes (references/srm.md, "Homogeneous
+/// slopes: interfaces only against plastic blocks").
 pub const INTERLOCKING_NOTE: &str = "every element interface is breakable while the blocks are elastic: the factor of \
      safety carries the interlocking bias of blocks that can part only along their faces, measured at +4 % to +74 % \
      (unconservative) on six published homogeneous slopes and mesh-dependent (+30 % hexahedra, +38 % prisms, +53 % \
-     tetrahedra on Griffiths & Lane's slope; references/plastic.md); for a rock mass whose failure must find its own \
+     tetrahedra on Griffiths & Lane's slope; references/srm.md); for a rock mass whose failure must find its own \
      way, give the blocks a [[material]] strength";
 
 impl Answer {
