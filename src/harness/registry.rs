@@ -295,6 +295,14 @@ pub const PLASTIC_PRANDTL: Case = Case {
     source: PLASTIC_MD,
 };
 
+/// The paper's slope with plastic blocks and every interface breakable.
+pub const PLASTIC_PAPER_SLOPE: Case = Case {
+    name: "paper slope, plastic blocks and every interface breakable at the rock mass strength",
+    input: "verification/plastic/paper-slope/paper-slope.toml",
+    checks: "`cdem srm` FS against the LEM (references/plastic.md, measured, not a row); its mesh times the plastic element pass (`cdem perf`)",
+    source: PLASTIC_MD,
+};
+
 /// Griffiths & Lane's example 1 with plastic blocks on structured hexahedra.
 pub const PLASTIC_GL1_HEX: Case = Case {
     name: "Griffiths & Lane 1999 ex. 1, plastic blocks, 384 hexahedra",
@@ -304,7 +312,7 @@ pub const PLASTIC_GL1_HEX: Case = Case {
 };
 
 /// Every case above (the extreme suite is [`extreme_cases`]).
-pub const CASES: [Case; 21] = [
+pub const CASES: [Case; 22] = [
     COLUMN,
     COLUMN_MERGED,
     SLOPE,
@@ -326,6 +334,7 @@ pub const CASES: [Case; 21] = [
     PLASTIC_COLUMN_TENSION,
     PLASTIC_PRANDTL,
     PLASTIC_GL1_HEX,
+    PLASTIC_PAPER_SLOPE,
 ];
 
 // ---------------------------------------------------------------------------
@@ -975,6 +984,7 @@ pub const ROWS: &[RowSpec] = &[
     // Performance, reported against the goals (tests/performance.rs).
     spec("perf/bandwidth", "performance: paper slope step", "bandwidth / stream triad (goal >= 0.5)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/element-bytes", "performance: paper slope element pass", "bytes per element-step (goal <= 0.6 x 4992 B of the full K_e)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
+    spec("perf/plastic-over-condensed", "performance: paper slope element pass, plastic blocks", "plastic / condensed element pass time, every tetrahedron elastic (goal <= 2)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/dr-over-fem", "performance: paper slope", "DR to 1e-5 / FEM solve time (goal <= 3)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/pcg-over-fem", "performance: paper slope", "PCG to 1e-5 / FEM solve time (goal <= 3)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/lem/paper_slope", "performance: LEM grid, paper_slope", "pySlope / ours time (goal >= 300)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),

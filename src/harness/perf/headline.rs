@@ -13,7 +13,8 @@ use serde::Serialize;
 use super::pyslope::{pyslope_seconds, time_lem_grid, time_pyslope_grid, LEM_CASES};
 use super::stream::stream_triad;
 use super::timing::{
-    time_dr, time_element_pass, time_fem, time_pcg, time_steps, DrFigure, ElementPassFigure, PcgFigure, StepFigure,
+    time_dr, time_element_pass, time_fem, time_pcg, time_plastic_pass, time_steps, DrFigure, ElementPassFigure,
+    PcgFigure, PlasticPassFigure, StepFigure,
 };
 use crate::error::Error;
 use crate::model::Model;
@@ -30,6 +31,9 @@ pub struct Headline {
     pub step_lumped: StepFigure,
     /// The element pass alone.
     pub element_pass: ElementPassFigure,
+    /// The element pass with plastic blocks on the same mesh
+    /// (`verification/plastic/paper-slope/paper-slope.toml`).
+    pub plastic_pass: PlasticPassFigure,
     pub dr_block: DrFigure,
     /// The elastic phase by two-level PCG.
     pub pcg: PcgFigure,
@@ -88,6 +92,9 @@ pub fn headline_with(
     let step_block = time_steps(model, &scene.solver, 500)?;
     let step_lumped = time_steps(model, &SolverParams { block_mass: Some(false), ..scene.solver.clone() }, 500)?;
     let element_pass = time_element_pass(model, 2000);
+    progress("paper slope: plastic element pass");
+    let plastic_scene = Scene::load(&root.join(crate::harness::registry::PLASTIC_PAPER_SLOPE.input))?;
+    let plastic_pass = time_plastic_pass(model, &crate::drivers::build_model(&plastic_scene)?, 200);
     progress("paper slope: dynamic relaxation");
     let dr_block = time_dr(model, &scene.solver)?;
     progress("paper slope: PCG");
@@ -112,6 +119,7 @@ pub fn headline_with(
         step_block,
         step_lumped,
         element_pass,
+        plastic_pass,
         dr_block,
         pcg,
         fem_s,

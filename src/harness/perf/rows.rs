@@ -11,6 +11,9 @@ use crate::harness::report::Check;
 
 /// LEM grid search at least this many times faster than pySlope (issue 28, item 3).
 pub const GOAL_LEM_OVER_PYSLOPE: f64 = 300.0;
+/// A plastic block's element step at most this many times the condensed
+/// elastic one (issue 24, item 7).
+pub const GOAL_PLASTIC_OVER_CONDENSED: f64 = 2.0;
 /// Bytes per element-step at most this fraction of the full-`K_e` count (issue 28, item 2).
 pub const GOAL_ELEMENT_BYTES_FRACTION: f64 = 0.6;
 
@@ -28,6 +31,15 @@ pub fn perf_rows(h: &Headline) -> Vec<Check> {
                 h.element_pass.gbs,
                 100.0 * h.element_fraction_of_stream(),
                 h.stream_gbs
+            )),
+        row("perf/plastic-over-condensed")
+            .value(h.plastic_pass.elastic_ratio(), GOAL_PLASTIC_OVER_CONDENSED, h.plastic_pass.elastic_s)
+            .with_note(format!(
+                "plastic pass, every tetrahedron elastic {:.3} ms, every one yielding {:.3} ms ({:.1}x), condensed {:.3} ms",
+                1e3 * h.plastic_pass.elastic_s,
+                1e3 * h.plastic_pass.yielding_s,
+                h.plastic_pass.yielding_ratio(),
+                1e3 * h.plastic_pass.condensed_s
             )),
         row("perf/dr-over-fem").value(h.dr_over_fem(), 3.0, h.dr_block.seconds),
         row("perf/pcg-over-fem").value(h.pcg_over_fem(), 3.0, h.pcg.seconds),

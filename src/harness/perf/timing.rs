@@ -96,6 +96,69 @@ pub fn time_element_pass(model: &Model, passes: usize) -> ElementPassFigure {
     }
 }
 
+/// The element pass of plastic blocks (`forces::element_forces_plastic`)
+/// against the condensed pass of the same mesh with elastic blocks
+/// (issue 24, item 7: at most 2x per element).
+#[derive(Debug, Clone, Serialize)]
+pub struct PlasticPassFigure {
+    /// Seconds per condensed pass (elastic blocks), per plastic pass with
+    /// every tetrahedron elastic (a field of 1e-9 m), and with every
+    /// tetrahedron yielding (1e-3 m: each return mapping runs); medians of 5 batches.
+    pub condensed_s: f64,
+    pub elastic_s: f64,
+    pub yielding_s: f64,
+}
+
+impl PlasticPassFigure {
+    pub fn elastic_ratio(&self) -> f64 {
+        self.elastic_s / self.condensed_s
+    }
+    pub fn yielding_ratio(&self) -> f64 {
+        self.yielding_s / self.condensed_s
+    }
+}
+
+/// The median of 5 batches of `passes / 5` calls of `pass` (s per call).
+fn median_pass(passes: usize, mut pass: impl FnMut()) -> f64 {
+    let per_batch = passes.div_ceil(5).max(1);
+    pass();
+    let mut batches: Vec<f64> = (0..5)
+        .map(|_| {
+            let t = Instant::now();
+            for _ in 0..per_batch {
+                pass();
+            }
+            t.elapsed().as_secs_f64() / per_batch as f64
+        })
+        .collect();
+    batches.sort_by(f64::total_cmp);
+    batches[2]
+}
+
+/// Times the element passes of [`PlasticPassFigure`]: `elastic` and
+/// `plastic` are the same mesh with elastic and with plastic blocks.
+pub fn time_plastic_pass(elastic: &Model, plastic: &Model, passes: usize) -> PlasticPassFigure {
+    let field =
+        |scale: f64| -> Vec<f64> { (0..3 * plastic.n_nodes()).map(|k| scale * ((k % 7) as f64 - 3.0)).collect() };
+    let mut f = vec![0.0; crate::model::ELEMENT_SLOT * plastic.elements.len()];
+    let u = field(1e-3);
+    let condensed_s = median_pass(passes, || {
+        crate::solver::forces::element_forces(elastic, std::hint::black_box(&u), &mut f);
+    });
+    let timed = |scale: f64, f: &mut Vec<f64>| {
+        let u = field(scale);
+        let mut rock = plastic.rock_state();
+        median_pass(passes, || {
+            // The history is reset each pass: every pass does the same work.
+            rock.history.iter_mut().for_each(|h| *h = Default::default());
+            crate::solver::forces::element_forces_plastic(plastic, &mut rock, std::hint::black_box(&u), f);
+        })
+    };
+    let elastic_s = timed(1e-9, &mut f);
+    let yielding_s = timed(1e-3, &mut f);
+    PlasticPassFigure { condensed_s, elastic_s, yielding_s }
+}
+
 /// Dynamic relaxation from rest to the scene's tolerance.
 #[derive(Debug, Clone, Serialize)]
 pub struct DrFigure {

@@ -55,6 +55,7 @@ pub const DECLARED: &[(&str, &[&str])] = &[
     ("ensemble/segment/", &["verification/ensemble/cohesive-segment.toml"]),
     ("meshes/regenerated", &[]),
     ("perf/", &["verification/cases/slope/slope.toml"]),
+    ("perf/plastic-over-condensed", &["verification/cases/slope/slope.toml", "verification/plastic/paper-slope/paper-slope.toml"]),
     ("perf/lem/", &["verification/lem/paper-slope-explicit.toml", "verification/lem/acads-1a.toml", "references/pyslope.json"]),
     ("perf/phase2/", &["verification/cases/slope-slip/slope-slip.toml"]),
     ("perf/srm/", &["verification/cases/slope-slip/slope-slip.toml"]),
