@@ -105,6 +105,12 @@ fn sliding_is_checked_on_its_cadence_and_after_the_tolerance() {
 /// Relaxes under the sliding-rate rule alone (rest state as reference, mass
 /// weights, windows of 20 steps, three growing windows, no floor, no bound).
 fn relax_with_rate_rule(solver: &mut Solver, model: &Model, state: &mut State, tol: f64) -> RunReport {
+    relax_with_travel(solver, model, state, tol, 0.0)
+}
+
+/// [`relax_with_rate_rule`] with the rate rule waiting for `travel` (m) of
+/// the largest displacement.
+fn relax_with_travel(solver: &mut Solver, model: &Model, state: &mut State, tol: f64, travel: f64) -> RunReport {
     let reference = vec![0.0; 3 * model.n_nodes()];
     let weights = model.mass.clone();
     let rule = Sliding {
@@ -114,7 +120,7 @@ fn relax_with_rate_rule(solver: &mut Solver, model: &Model, state: &mut State, t
         windows: 3,
         floor: 0.0,
         displacement: f64::INFINITY,
-        travel: 0.0,
+        travel,
     };
     relax(solver, model, state, &StopRules { sliding: Some(rule), ..rules(tol, 100_000) }, &mut unobserved).unwrap()
 }
@@ -138,4 +144,30 @@ fn sliding_by_rate_fires_when_the_mean_displacement_grows_without_decay_and_not_
     let r = relax_with_rate_rule(&mut solver, &model, &mut state, tol);
     // Windows 2, 3 and 4 are the first three that can be compared with a previous one.
     assert_eq!((r.stop, r.steps), (Stop::Sliding, 80));
+}
+
+#[test]
+fn the_rate_rule_waits_for_its_travel() {
+    // The accelerating pull of the test above slides at step 80; with a
+    // travel floor the rule fires at the first window past it, later, and
+    // the largest displacement then is at least the floor.
+    let pulled = || {
+        let (mut model, _, _, tol) = column();
+        model.fixed.fill(false);
+        let solver =
+            Solver::new(&model, cdem::solver::SolverParams { block_mass: Some(false), ..Default::default() }).unwrap();
+        (model, solver, tol)
+    };
+    let (model, mut solver, tol) = pulled();
+    let mut state = State::new(&model);
+    let at_80 = relax_with_travel(&mut solver, &model, &mut state, tol, 0.0);
+    let moved_at_80 = state.u.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    assert_eq!((at_80.stop, at_80.steps), (Stop::Sliding, 80));
+    let (model, mut solver, tol) = pulled();
+    let mut state = State::new(&model);
+    let r = relax_with_travel(&mut solver, &model, &mut state, tol, 10.0 * moved_at_80);
+    let moved = state.u.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    assert_eq!(r.stop, Stop::Sliding);
+    assert!(r.steps > 80 && r.steps % 20 == 0, "{} steps", r.steps);
+    assert!(moved >= 10.0 * moved_at_80, "{moved} < {}", 10.0 * moved_at_80);
 }
