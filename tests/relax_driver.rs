@@ -168,6 +168,6 @@ fn the_rate_rule_waits_for_its_travel() {
     let r = relax_with_travel(&mut solver, &model, &mut state, tol, 10.0 * moved_at_80);
     let moved = state.u.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     assert_eq!(r.stop, Stop::Sliding);
-    assert!(r.steps > 80 && r.steps % 20 == 0, "{} steps", r.steps);
+    assert!(r.steps > 80 && r.steps.is_multiple_of(20), "{} steps", r.steps);
     assert!(moved >= 10.0 * moved_at_80, "{moved} < {}", 10.0 * moved_at_80);
 }
