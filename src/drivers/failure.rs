@@ -67,7 +67,8 @@ pub const SLIDING_FLOOR: f64 = 1e-4;
 /// at a non-decaying rate for a while as the stresses redistribute, and
 /// without it trials were called sliding after 5.9 mm (ACADS 1(a), F =
 /// 0.9625, against an LEM of 0.985) and 8 mm (Griffiths & Lane refined, F =
-/// 1.3672, against 1.378): conservative, but a call on millimetres
+/// 1.3672, against 1.378; with the floor that trial still slides, after
+/// 15.8 mm): conservative, but calls on millimetres
 /// (references/plastic.md, docs/method.md 2.9b). Elastic blocks keep no
 /// such floor: their validated cases slide on 1e-4 m.
 pub const PLASTIC_SLIDING_TRAVEL: f64 = 1e-3;
