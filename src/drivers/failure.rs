@@ -89,6 +89,7 @@ pub fn phase_plan(
 
 /// The sliding rule of phase 2 from the elastic displacement `u_elastic`.
 pub fn sliding_rule<'a>(model: &'a Model, u_elastic: &'a [f64], params: &FailureParams) -> Sliding<'a> {
+    let (lo, hi) = model.bounds();
     let mut rule = Sliding {
         reference: u_elastic,
         weights: &model.mass,
@@ -97,23 +98,13 @@ pub fn sliding_rule<'a>(model: &'a Model, u_elastic: &'a [f64], params: &Failure
         floor: 0.0,
         displacement: params.sliding_displacement.unwrap_or(f64::INFINITY),
         travel: match model.has_plastic_blocks() {
-            true => PLASTIC_SLIDING_TRAVEL * model_height(model),
+            true => PLASTIC_SLIDING_TRAVEL * (hi[2] - lo[2]).max(0.0),
             false => 0.0,
         },
     };
     let zero = vec![0.0; u_elastic.len()];
     rule.floor = SLIDING_FLOOR * Sliding { reference: &zero, ..rule }.mean_displacement(u_elastic);
     rule
-}
-
-/// The model's extent along z (m).
-fn model_height(model: &Model) -> f64 {
-    let (lo, hi) = model.x0.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x[2]), b.max(x[2])));
-    if hi > lo {
-        hi - lo
-    } else {
-        0.0
-    }
 }
 
 /// Runs phase 2 under `plan` from the elastic `state` (which it advances);

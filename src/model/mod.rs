@@ -169,6 +169,24 @@ impl Model {
         self.x0.len()
     }
 
+    /// The box of the node copies `nodes` at rest: `(lo, hi)` per axis (m);
+    /// infinite bounds (`lo > hi`) for no node.
+    pub fn bounds_of(&self, nodes: impl IntoIterator<Item = usize>) -> ([f64; 3], [f64; 3]) {
+        let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+        for i in nodes {
+            for d in 0..3 {
+                lo[d] = lo[d].min(self.x0[i][d]);
+                hi[d] = hi[d].max(self.x0[i][d]);
+            }
+        }
+        (lo, hi)
+    }
+
+    /// The box of every node at rest ([`Self::bounds_of`]).
+    pub fn bounds(&self) -> ([f64; 3], [f64; 3]) {
+        self.bounds_of(0..self.n_nodes())
+    }
+
     /// Each spring's strength as the scene gives it (its interface's): the
     /// joint state a run starts from.
     pub fn joint_state(&self) -> JointState {

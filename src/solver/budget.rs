@@ -42,13 +42,7 @@ pub const MIN_STEPS: usize = 2000;
 
 /// `n_c`: the largest extent of the model over its median element size.
 pub fn crossing_elements(model: &Model) -> f64 {
-    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-    for x in &model.x0 {
-        for d in 0..3 {
-            lo[d] = lo[d].min(x[d]);
-            hi[d] = hi[d].max(x[d]);
-        }
-    }
+    let (lo, hi) = model.bounds();
     let extent = (0..3).map(|d| hi[d] - lo[d]).fold(0.0, f64::max);
     let mut sizes: Vec<f64> = model.elements.volume.iter().map(|v| v.cbrt()).collect();
     if sizes.is_empty() || !(extent > 0.0) {

@@ -77,23 +77,11 @@ pub struct ElementPassFigure {
 pub fn time_element_pass(model: &Model, passes: usize) -> ElementPassFigure {
     let u: Vec<f64> = (0..3 * model.n_nodes()).map(|k| 1e-3 * ((k % 7) as f64 - 3.0)).collect();
     let mut f = vec![0.0; crate::model::ELEMENT_SLOT * model.elements.len()];
-    let per_batch = passes.div_ceil(5).max(1);
-    let mut batches = Vec::with_capacity(5);
-    crate::solver::forces::element_forces(model, &u, &mut f);
-    for _ in 0..5 {
-        let t = Instant::now();
-        for _ in 0..per_batch {
-            crate::solver::forces::element_forces(model, std::hint::black_box(&u), &mut f);
-        }
-        batches.push(t.elapsed().as_secs_f64() / per_batch as f64);
-    }
-    batches.sort_by(f64::total_cmp);
+    let pass_s = median_pass(passes, || {
+        crate::solver::forces::element_forces(model, std::hint::black_box(&u), &mut f);
+    });
     let bytes = super::bytes::element_bytes(model);
-    ElementPassFigure {
-        pass_s: batches[2],
-        bytes_per_element: bytes / model.elements.len() as f64,
-        gbs: bytes / batches[2] / 1e9,
-    }
+    ElementPassFigure { pass_s, bytes_per_element: bytes / model.elements.len() as f64, gbs: bytes / pass_s / 1e9 }
 }
 
 /// The element pass of plastic blocks (`forces::element_forces_plastic`)
