@@ -8,7 +8,7 @@ use super::{Elements, Gather, Interface, Model};
 use crate::error::{Error, ModelError};
 use crate::mesh::adjacency::{face_key, face_nodes, FaceAdjacency, FaceKey};
 use crate::mesh::perturb::perturb_nodes;
-use crate::mesh::shape::{cross, dot, norm, sub, CellDefect};
+use crate::mesh::shape::{dot, norm, sub, CellDefect};
 use crate::mesh::Mesh;
 use crate::physics::element::{element_operators, pack_symmetric};
 use crate::physics::material::{Material, MaterialLaw, YoungPoisson};
@@ -17,7 +17,7 @@ use crate::physics::spring::Springs;
 
 /// Builds the model: 1. perturb nodes, 2. classify interfaces, 3. make node
 /// copies (merging across merged interfaces), 4. element operators and masses,
-/// 5. springs on the other interfaces, 6. constraints, 7. gravity.
+/// 5. springs on the other interfaces, 6. constraints, 7. gravity, 8. water.
 pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
     let adj = FaceAdjacency::build(mesh)?;
     let coords = perturbed_coordinates(mesh, spec, &adj)?;
@@ -101,7 +101,27 @@ pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
 
     // 7. Gravity.
     let g = spec.gravity;
-    let f_ext = (0..3 * n_nodes).map(|k| mass[k / 3] * g[k % 3]).collect();
+    let mut f_ext: Vec<f64> = (0..3 * n_nodes).map(|k| mass[k / 3] * g[k % 3]).collect();
+
+    // 8. Water: pore pressure on the spring interfaces and outer faces below it.
+    let water = match spec.water {
+        None => None,
+        Some(w) => {
+            let centroids: Vec<[f64; 3]> = (0..el.len())
+                .map(|e| {
+                    let c = el.corners(e);
+                    [0, 1, 2].map(|d| c.iter().map(|&n| x0[n as usize][d]).sum::<f64>() / c.len() as f64)
+                })
+                .collect();
+            let node_of = |c: usize, n: usize| node_of_slot[slot(c, n)];
+            let (f_w, model) =
+                super::water::water_forces(w, mesh, &adj, &coords, &x0, &springs, &interfaces, node_of, &centroids)?;
+            for (f, w) in f_ext.iter_mut().zip(&f_w) {
+                *f += w;
+            }
+            Some(model)
+        }
+    };
 
     let gather = Gather::build(&el, &springs, n_nodes);
     Ok(Model {
@@ -117,6 +137,7 @@ pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
         interfaces,
         gather,
         mesh_coords: coords,
+        water,
     })
 }
 
@@ -302,23 +323,15 @@ fn make_springs(
             continue;
         }
         let p: Vec<[f64; 3]> = nodes.iter().map(|&n| coords[n]).collect();
-        let m = p.len() as f64;
-        let f = [0, 1, 2].map(|d| p.iter().map(|x| x[d]).sum::<f64>() / m);
-        for k in 0..p.len() {
-            let (prev, a, next) = (p[(k + p.len() - 1) % p.len()], p[k], p[(k + 1) % p.len()]);
-            let t1 = cross(sub(next, a), sub(f, a)); // 2 x area vector of (a, next, F)
-            let t2 = cross(sub(a, prev), sub(f, prev)); // 2 x area vector of (prev, a, F)
-            let area = 0.25 * (norm(t1) + norm(t2));
-            let nsum = [t1[0] + t2[0], t1[1] + t2[1], t1[2] + t2[2]];
-            let nlen = norm(nsum);
+        for (k, area, normal) in super::water::corner_shares(&p) {
             let (a_id, b_id) = (node_of(s.cells[0], nodes[k]), node_of(s.cells[1], nodes[k]));
-            if a_id == b_id || nlen == 0.0 {
+            if a_id == b_id {
                 continue; // already joined through a merged interface
             }
             let (kn, ks) = interfaces[iface].props.stiffness(area);
             sp.a.push(a_id);
             sp.b.push(b_id);
-            sp.normal.push(nsum.map(|v| v / nlen));
+            sp.normal.push(normal);
             sp.area.push(area);
             sp.kn.push(kn);
             sp.ks.push(ks);

@@ -8,6 +8,7 @@ mod build;
 pub mod spec;
 pub mod supports;
 mod union_find;
+pub mod water;
 
 pub use build::build;
 pub use build::{cell_materials, fixed_mesh_nodes, perturbed_coordinates, spec_materials};
@@ -138,7 +139,7 @@ pub struct Model {
     pub mass: Vec<f64>,
     /// Fixed components, `3 i + d`.
     pub fixed: Vec<bool>,
-    /// External force (gravity), `3 i + d` (N).
+    /// External force (gravity and water), `3 i + d` (N).
     pub f_ext: Vec<f64>,
     pub elements: Elements,
     /// Per-tetrahedron operators of the elements whose material yields.
@@ -149,6 +150,8 @@ pub struct Model {
     pub gather: Gather,
     /// Perturbed mesh node coordinates (m).
     pub mesh_coords: Vec<[f64; 3]>,
+    /// The scene's `[water]` (its forces are in `f_ext`), if any.
+    pub water: Option<water::WaterModel>,
 }
 
 impl Model {

@@ -23,6 +23,8 @@ pub struct ModelSpec<'a> {
     pub boundary: &'a [Boundary],
     /// Gravitational acceleration (m/s^2).
     pub gravity: [f64; 3],
+    /// Pore water, if any.
+    pub water: Option<&'a WaterSection>,
 }
 
 #[derive(Debug, Clone, Default, Deserialize)]
@@ -192,4 +194,85 @@ impl Axis {
 pub struct Boundary {
     pub group: String,
     pub fix: Vec<Axis>,
+}
+
+/// Scene section `[water]`: a phreatic surface in the section and
+/// water-filled cracks ([`crate::physics::water`] gives the pressure). The
+/// blocks are impermeable and the water acts in the joints (UDEC's model):
+/// its pressure pushes on both faces of every spring interface below it and
+/// on the model's outer faces below it, so that the springs carry the
+/// effective stress.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WaterSection {
+    /// The phreatic surface `[[x, z], ...]` (m), x increasing, spanning the
+    /// model's x-range. Empty: no surface (cracks only).
+    #[serde(default)]
+    pub surface: Vec<[f64; 2]>,
+    /// Raises the whole surface by this much (m, default 0): the water level
+    /// as one number, for an ensemble's `[[ensemble.random]]` and for
+    /// `cdem srm`'s bisection on the level.
+    #[serde(default)]
+    pub rise: f64,
+    /// `gamma_w` (N/m^3). Default 9810.
+    #[serde(default = "default_water_unit_weight")]
+    pub unit_weight: f64,
+    /// `"vertical"` (default) or `"cos2"`: the head from the vertical
+    /// distance to the surface, or with Slide's cos^2 correction.
+    #[serde(default)]
+    pub hu: crate::physics::water::Hu,
+    /// Water-filled open joints.
+    #[serde(default)]
+    pub crack: Vec<CrackSection>,
+}
+
+fn default_water_unit_weight() -> f64 {
+    crate::physics::water::DEFAULT_UNIT_WEIGHT
+}
+
+/// `[[water.crack]]`: an `[[interface]]` group filled with water to `level` (m).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CrackSection {
+    pub group: String,
+    pub level: f64,
+}
+
+impl WaterSection {
+    /// The phreatic surface (raised by `rise`), if one is drawn; errors name their key.
+    pub fn phreatic(&self) -> Result<Option<crate::physics::water::Phreatic>, crate::error::SceneError> {
+        use crate::error::SceneError;
+        use crate::physics::water::Phreatic;
+        if !self.rise.is_finite() {
+            return Err(SceneError::invalid("water.rise", "must be finite"));
+        }
+        if !(self.unit_weight.is_finite() && self.unit_weight > 0.0) {
+            return Err(SceneError::invalid(
+                "water.unit_weight",
+                format!("must be a finite positive number, got {}", self.unit_weight),
+            ));
+        }
+        if self.surface.is_empty() {
+            if self.crack.is_empty() {
+                return Err(SceneError::invalid("water", "gives neither a surface nor a [[water.crack]]"));
+            }
+            return Ok(None);
+        }
+        let points = self.surface.iter().map(|p| [p[0], p[1] + self.rise]).collect();
+        Phreatic::new("water", points, self.unit_weight, self.hu).map(Some)
+    }
+
+    /// Checks what can be checked without the mesh.
+    pub fn validate(&self) -> Result<(), crate::error::SceneError> {
+        self.phreatic()?;
+        for (i, c) in self.crack.iter().enumerate() {
+            if c.group.is_empty() {
+                return Err(crate::error::SceneError::invalid(format!("water.crack[{i}].group"), "missing"));
+            }
+            if !c.level.is_finite() {
+                return Err(crate::error::SceneError::invalid(format!("water.crack[{i}].level"), "must be finite"));
+            }
+        }
+        Ok(())
+    }
 }

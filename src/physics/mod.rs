@@ -26,3 +26,4 @@ pub mod mohr_coulomb;
 pub mod plastic;
 pub mod spring;
 pub mod tet_operator;
+pub mod water;

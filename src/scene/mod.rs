@@ -52,6 +52,15 @@
 //! key = "interface[0].strength.cohesion"
 //! std_dev = 2e3
 //!
+//! [water]                        # optional: pore water (physics::water, model::water)
+//! surface = [[0.0, 30.0], [40.0, 30.0], [80.0, 22.0]]   # phreatic surface [x, z] (m), x increasing
+//! rise = 0.0                     # raises the whole surface (m): the water level as one number
+//! unit_weight = 9810.0           # gamma_w (N/m^3)
+//! hu = "vertical"                # or "cos2" (Slide's correction under a sloping surface)
+//! [[water.crack]]                # an [[interface]] group filled to a level (m)
+//! group = "crack"
+//! level = 32.0
+//!
 //! [analysis]                     # optional: eq. 21/22 on a slip circle (see AnalysisSpec)
 //! circle = { xc = 24.006, zc = 63.222, r = 43.41 }   # absent: the critical circle of [lem]
 //!
@@ -74,8 +83,8 @@ use serde::Deserialize;
 
 use crate::error::SceneError;
 pub use crate::model::spec::{
-    Axis, Boundary, JointMode, JointSection, MaterialSection, ModelSpec, Perturbation, RockStrengthSection,
-    StrengthSection,
+    Axis, Boundary, CrackSection, JointMode, JointSection, MaterialSection, ModelSpec, Perturbation,
+    RockStrengthSection, StrengthSection, WaterSection,
 };
 use crate::solver::SolverParams;
 pub use analysis::{AnalysisSpec, SurfaceStrength};
@@ -108,6 +117,8 @@ pub struct Scene {
     pub ensemble: Option<EnsembleSpec>,
     /// Eq. 21/22 on a slip circle (`cdem run`, `cdem fem`), if present.
     pub analysis: Option<AnalysisSpec>,
+    /// Pore water (a phreatic surface, water-filled cracks), if present.
+    pub water: Option<WaterSection>,
     /// Directory of the scene file: relative paths are resolved against it.
     #[serde(skip)]
     pub base_dir: PathBuf,
@@ -246,6 +257,7 @@ impl Scene {
             interface: &self.interface,
             boundary: &self.boundary,
             gravity: self.loads.gravity,
+            water: self.water.as_ref(),
         }
     }
 

@@ -134,6 +134,9 @@ pub(super) fn validate(s: &Scene) -> Result<(), SceneError> {
     if s.loads.gravity.iter().any(|g| !g.is_finite()) {
         return Err(SceneError::invalid("loads.gravity", "must be finite"));
     }
+    if let Some(w) = &s.water {
+        w.validate()?;
+    }
     s.solver.validate()?;
     if let Some(f) = &s.failure {
         f.validate()?;
