@@ -36,8 +36,10 @@ D = math.radians
 
 # ---------------------------------------------------------------- 1. plane
 
-def plane_failure(H, psi_f, psi_p, c, phi, gamma, b):
-    """Hoek & Bray's plane failure, dry tension crack a distance b behind the crest."""
+def plane_failure(H, psi_f, psi_p, c, phi, gamma, b, gamma_w=0.0, z_w=0.0, uplift=True):
+    """Hoek & Bray's plane failure, tension crack a distance b behind the crest,
+    filled with water to z_w: V = gamma_w z_w^2 / 2 in the crack and, if uplift,
+    U = gamma_w z_w A / 2 on the plane (falling linearly to the toe)."""
     tf, tp = math.tan(D(psi_f)), math.tan(D(psi_p))
     x_crest = H / tf
     x_crack = x_crest + b
@@ -48,8 +50,20 @@ def plane_failure(H, psi_f, psi_p, c, phi, gamma, b):
     poly = [(0.0, 0.0), (x_crest, H), (x_crack, H), (x_crack, z_plane)]
     area = 0.5 * abs(sum(x0 * z1 - x1 * z0 for (x0, z0), (x1, z1) in zip(poly, poly[1:] + poly[:1])))
     assert abs(gamma * area - W) < 1e-9 * W, (gamma * area, W)
-    fs = (c * A + W * math.cos(D(psi_p)) * math.tan(D(phi))) / (W * math.sin(D(psi_p)))
-    return {"z": z, "A": A, "W": W, "x_crest": x_crest, "x_crack": x_crack, "FS": fs}
+    U = 0.5 * gamma_w * z_w * A if uplift else 0.0
+    V = 0.5 * gamma_w * z_w**2
+    fs = (c * A + (W * math.cos(D(psi_p)) - U - V * math.sin(D(psi_p))) * math.tan(D(phi))) / (
+        W * math.sin(D(psi_p)) + V * math.cos(D(psi_p))
+    )
+    return {"z": z, "A": A, "W": W, "U": U, "V": V, "x_crest": x_crest, "x_crack": x_crack, "FS": fs}
+
+
+def infinite_slope(beta, z, gamma, c, phi, gamma_w, m):
+    """The infinite slope, water table parallel to the surface m z above the slip plane."""
+    u = gamma_w * m * z * math.cos(D(beta)) ** 2
+    return (c + (gamma * z * math.cos(D(beta)) ** 2 - u) * math.tan(D(phi))) / (
+        gamma * z * math.sin(D(beta)) * math.cos(D(beta))
+    )
 
 
 # ---------------------------------------------------------------- 2. wedge
@@ -218,6 +232,17 @@ def cases():
     out = {}
     # 1. Hoek & Bray's plane failure as the issue gives it (dry crack 9 m behind the crest).
     out["plane"] = plane_failure(H=30.0, psi_f=60.0, psi_p=30.0, c=48.0, phi=30.0, gamma=25.5, b=9.0)
+    # 1b. The same with water (references/water.md): the crack half full and full
+    # (gamma_w = 9.81 kN/m^3), and full with the plane drained (U = 0).
+    zc = out["plane"]["z"]
+    for name, z_w, uplift in (("half", 0.5 * zc, True), ("full", zc, True), ("crack_only", zc, False)):
+        out[f"plane_water_{name}"] = plane_failure(
+            H=30.0, psi_f=60.0, psi_p=30.0, c=48.0, phi=30.0, gamma=25.5, b=9.0, gamma_w=9.81, z_w=z_w, uplift=uplift
+        )
+    # 1c. The infinite slope with a parallel water table (references/water.md):
+    # beta 30, z = 4 / cos 30, gamma 20 kN/m^3, c' 5 kPa, phi' 35.
+    for m in (0.0, 0.5, 1.0):
+        out[f"infinite_slope_m{m}"] = infinite_slope(30.0, 4.0 / math.cos(D(30.0)), 20.0, 5.0, 35.0, 9.81, m)
     # 2a. The verification wedge of verification/joints/wedge-geometry.toml:
     # symmetric, planes 55 deg dipping 55 deg either side of the face's dip
     # direction (face 75/270, top horizontal, H = 12 m), friction 35 deg, no
@@ -272,6 +297,11 @@ def main():
         return
     p = out["plane"]
     print(f"plane: z = {p['z']:.4f} m, A = {p['A']:.4f} m, W = {p['W']:.2f} kN/m, FS = {p['FS']:.4f}")
+    for name in ("half", "full", "crack_only"):
+        q = out[f"plane_water_{name}"]
+        print(f"plane, water {name}: U = {q['U']:.2f} kN/m, V = {q['V']:.2f} kN/m, FS = {q['FS']:.4f}")
+    for m in (0.0, 0.5, 1.0):
+        print(f"infinite slope, m = {m}: FS = {out[f'infinite_slope_m{m}']:.4f}")
     w = out["wedge_symmetric"]
     print(
         f"symmetric wedge: psi_i = {w['psi_i']:.4f}, trend {w['trend']:.2f}, xi = {w['xi']:.4f}, "

@@ -153,6 +153,7 @@ fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Err
     progress("plastic blocks: Griffiths & Lane's slope by strength reduction (about 3 min)");
     rep.checks.push(suite::plastic::gl1_hex_row()?.row);
     joint_sets(rep, progress)?;
+    water(rep, progress)?;
     progress("analytic ensemble");
     rep.checks.extend(suite::ensemble::segment(root)?.rows);
     rep.checks.extend(validation::pyslope_rows(root)?);
@@ -167,6 +168,16 @@ fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Err
     rep.checks.extend(crate::harness::perf::rows::perf_rows(&h));
     let phase2 = crate::harness::perf::failure::phase2_figure(root, progress)?;
     rep.checks.extend(crate::harness::perf::rows::phase2_rows(&phase2));
+    Ok(())
+}
+
+/// Pore water (no paper figure): the submerged column against Terzaghi's
+/// effective stress, the infinite slope and Hoek & Bray's plane failure
+/// with water by `cdem srm` against their closed forms.
+fn water(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
+    progress("water: submerged column, infinite slope, plane failure with a water-filled crack");
+    let _ = writeln!(rep.md, "## Pore water: effective stress and the closed forms (references/water.md)\n");
+    rep.checks.extend(suite::water::rows()?);
     Ok(())
 }
 

@@ -15,4 +15,5 @@ pub mod skfem;
 pub mod slope_failure;
 pub mod srm;
 pub mod taylor;
+pub mod water;
 pub mod wulong;

@@ -1,0 +1,99 @@
+//! Pore water (src/physics/water.rs, src/model/water.rs; references/water.md):
+//! the water forces against Archimedes, the submerged column against
+//! Terzaghi's effective stress, and strength reduction with water against the
+//! closed forms of the infinite slope and of Hoek & Bray's plane failure.
+//! The runs and rows are [`cdem::harness::suite::water`] (shared with
+//! `cdem reproduce`).
+
+use cdem::drivers::build_model;
+use cdem::harness::registry as reg;
+use cdem::harness::report::record;
+use cdem::harness::suite::water;
+use cdem::scene::{Scene, WaterSection};
+
+/// A closed model wholly under water feels its buoyancy, gamma_w V upwards,
+/// whatever its interfaces: the interfaces' forces cancel in pairs and the
+/// outer faces' integrate to it (Gauss). Both element shapes of the column.
+#[test]
+fn a_submerged_model_feels_its_buoyancy() {
+    for case in [reg::COLUMN, reg::COLUMN_MERGED] {
+        let mut s: Scene = case.scene().unwrap();
+        s.water = Some(WaterSection { surface: vec![[-10.0, 55.0], [10.0, 55.0]], ..WaterSection::default() });
+        s.water.as_mut().unwrap().unit_weight = 9810.0;
+        let m = build_model(&s).unwrap();
+        let w = m.water.as_ref().unwrap();
+        let volume: f64 = m.elements.volume.iter().sum();
+        let expected = 9810.0 * volume;
+        println!("{}: resultant {:?}, gamma_w V = {expected}", case.name, w.resultant);
+        assert!((w.resultant[2] - expected).abs() < 1e-9 * expected, "{:?}", w.resultant);
+        assert!(w.resultant[0].abs() < 1e-9 * expected && w.resultant[1].abs() < 1e-9 * expected);
+    }
+}
+
+#[test]
+fn the_submerged_column_carries_effective_stress_in_its_springs() {
+    let (rows, r) = water::column_rows().unwrap();
+    for c in &rows {
+        println!("{}: {:.6e} vs {:.6e} (err {:.2e})", c.id, c.ours, c.reference, c.rel_error());
+    }
+    record("water_column", &rows);
+    assert!(r.summary.converged);
+    assert!(rows.iter().all(|c| c.passed()), "{rows:?}");
+}
+
+#[test]
+fn strength_reduction_with_water_matches_the_closed_forms() {
+    let mut rows = Vec::new();
+    for (case, fs, id) in water::srm_cases() {
+        let (row, r) = water::srm_row(case, fs, id).unwrap();
+        println!("{id}: FS {:.4} {:?} vs {fs:.4} ({} trials)", r.fs.unwrap_or(f64::NAN), r.bracket, r.trials.len());
+        rows.push(row);
+    }
+    record("water_srm", &rows);
+    assert!(rows.iter().all(|c| c.passed()), "{rows:?}");
+}
+
+/// The registry's closed forms against the independent script
+/// (`python3 scripts/rock_slope_closed_forms.py`, references/water.md).
+#[test]
+fn the_registry_closed_forms_equal_the_reference_script() {
+    let (p, z) = (reg::PLANE_FAILURE_SET, reg::PLANE_FAILURE_SET.crack_depth());
+    let script = [(0.5 * z, true, 1.1152), (z, true, 0.7943), (z, false, 1.0424)];
+    for (z_w, uplift, fs) in script {
+        let ours = p.fs_with_water(9810.0, z_w, uplift);
+        assert!((ours - fs).abs() < 1e-4, "z_w {z_w} uplift {uplift}: {ours} vs the script's {fs}");
+    }
+    assert!((p.fs_with_water(9810.0, 0.0, true) - p.fs()).abs() < 1e-12);
+    for (m, fs) in [(0.0, 1.3378), (0.5, 1.0404), (1.0, 0.7429)] {
+        let ours = reg::INFINITE_SLOPE_SET.fs(m);
+        assert!((ours - fs).abs() < 1e-4, "m {m}: {ours} vs the script's {fs}");
+    }
+}
+
+/// Bad water input: a typed error naming its key.
+#[test]
+fn bad_water_is_named() {
+    let base = || reg::WATER_PLANE_CRACK.scene().unwrap();
+    let err = |s: Scene| build_model(&s).unwrap_err().to_string();
+    // A crack filled above its top.
+    let mut s = base();
+    s.water.as_mut().unwrap().crack[0].level = 31.0;
+    assert!(err(s).contains("water.crack[0].level"));
+    // A crack that is not an interface group.
+    let mut s = base();
+    s.water.as_mut().unwrap().crack[0].group = "rock".into();
+    assert!(err(s).contains("water.crack[0].group"));
+    // A surface that does not span the model.
+    let mut s = base();
+    s.water.as_mut().unwrap().surface = vec![[0.0, 10.0], [20.0, 10.0]];
+    assert!(err(s).contains("water.surface"));
+    // Non-monotone x, through the scene's own check.
+    let mut s = base();
+    s.water.as_mut().unwrap().surface = vec![[-5.0, 10.0], [50.0, 10.0], [40.0, 10.0]];
+    let e = s.validate().unwrap_err().to_string();
+    assert!(e.contains("water.surface[2]"), "{e}");
+    // Neither a surface nor a crack.
+    let mut s = base();
+    s.water.as_mut().unwrap().crack.clear();
+    assert!(s.validate().unwrap_err().to_string().contains("water"));
+}
