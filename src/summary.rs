@@ -123,6 +123,28 @@ pub struct Summary {
     /// The plastic blocks at the end (scenes with a `[[material]] strength`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub plastic: Option<PlasticSummary>,
+    /// The pore water that ran (scenes with `[water]`); absent: dry.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub water: Option<WaterSummary>,
+}
+
+/// Which water model ran, and on what.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct WaterSummary {
+    /// The model, in words (joint water: impermeable blocks).
+    pub model: String,
+    /// The phreatic surface `[x, z]` (m) as it ran (raised by `rise`), if any.
+    pub surface: Option<Vec<[f64; 2]>>,
+    /// `gamma_w` (N/m^3).
+    pub unit_weight: f64,
+    /// `"vertical"` or `"cos2"`.
+    pub hu: String,
+    /// `(interface group, level (m))` of each water-filled crack.
+    pub cracks: Vec<(String, f64)>,
+    /// Resultant of the water forces on the model (N).
+    pub resultant: [f64; 3],
+    /// Springs below the water (u > 0) of all springs.
+    pub wet_springs: usize,
 }
 
 /// How much of the plastic blocks yields (m^3).

@@ -137,6 +137,7 @@ fn the_elastic_plastic_element_is_its_mixed_stiffness() {
             &nodes,
             &u,
             Volumetric::Cell,
+            0.0,
             &mut hist,
             &mut got,
         );

@@ -97,3 +97,66 @@ fn bad_water_is_named() {
     s.water.as_mut().unwrap().crack.clear();
     assert!(s.validate().unwrap_err().to_string().contains("water"));
 }
+
+/// A plastic cell yields on the effective stress: a unit cube compressed
+/// hydrostatically to p = -50 kPa (total) is elastic dry, and with a pore
+/// pressure of 60 kPa its effective stress is +10 kPa of tension, past a
+/// cut-off of 5 kPa: it yields in tension, and its total stress comes back
+/// to the cut-off less the pore pressure, T - u = -55 kPa.
+#[test]
+fn plastic_blocks_yield_on_the_effective_stress() {
+    use cdem::mesh::shape::CellKind;
+    use cdem::physics::element::element_operators;
+    use cdem::physics::material::{Material, MaterialLaw, RockStrength, YoungPoisson};
+    use cdem::physics::mohr_coulomb::{MohrCoulomb, Yield};
+    use cdem::physics::plastic::{plastic_element_force, plastic_operator, TetPlastic, Volumetric, MAX_TETS};
+    use cdem::physics::tet_operator::TetTopology;
+    let strength = RockStrength { cohesion: 20e3, tan_phi: 30f64.to_radians().tan(), tensile: 5e3, tan_psi: 0.0 };
+    let material = Material {
+        lame: YoungPoisson { young: 1e9, poisson: 0.25 }.into(),
+        density: 2000.0,
+        law: MaterialLaw::MohrCoulomb(strength),
+    };
+    let corners = vec![
+        [0., 0., 0.],
+        [1., 0., 0.],
+        [1., 1., 0.],
+        [0., 1., 0.],
+        [0., 0., 1.],
+        [1., 0., 1.],
+        [1., 1., 1.],
+        [0., 1., 1.],
+    ];
+    let ops = element_operators(CellKind::Hex8, &corners, &material).unwrap();
+    // Uniform volumetric strain e: p = K e (K = E / (3 (1 - 2 nu)) = 666.7 MPa).
+    let bulk = 1e9 / (3.0 * (1.0 - 0.5));
+    let e = -50e3 / bulk / 3.0;
+    let u: Vec<f64> = corners.iter().flat_map(|c| c.map(|x| e * x)).collect();
+    let nodes: Vec<u32> = (0..8).collect();
+    let tets = plastic_operator(CellKind::Hex8, &corners);
+    let surface = MohrCoulomb::of(&strength);
+    let run = |pore: f64| {
+        let mut hist = [TetPlastic::default(); MAX_TETS];
+        let mut f = vec![0.0; 24];
+        let step = plastic_element_force(
+            &TetTopology::of(CellKind::Hex8),
+            &tets,
+            &ops.grad,
+            material.lame,
+            &surface,
+            &nodes,
+            &u,
+            Volumetric::Cell,
+            pore,
+            &mut hist,
+            &mut f,
+        );
+        (step.pressure, hist.iter().take(tets.len()).all(|h| h.now == Yield::Tension), hist[0].now)
+    };
+    let (p_dry, _, now_dry) = run(0.0);
+    assert_eq!(now_dry, Yield::Elastic);
+    assert!((p_dry + 50e3).abs() < 1e-6 * 50e3, "{p_dry}");
+    let (p_wet, all_tension, _) = run(60e3);
+    assert!(all_tension, "every tetrahedron yields in tension");
+    assert!((p_wet - (5e3 - 60e3)).abs() < 1e-6 * 50e3, "{p_wet}");
+}

@@ -111,7 +111,14 @@ pub fn run_analysis(
         Some((strength, from)) => (vec![*strength; stations.len()], from.clone()),
         None => (material_strengths(scene, mesh, &stations)?, "[[lem.material]] of each station's cell".into()),
     };
-    let points = from_cell_stresses(&arc, &stations, stress);
+    let mut points = from_cell_stresses(&arc, &stations, stress);
+    // With water the blocks carry the total stress: eq. 19 takes the effective
+    // normal stress sigma_n' = sigma_n - u (the springs' is effective already).
+    if let Some(surface) = scene.water.as_ref().map(|w| w.phreatic()).transpose()?.flatten() {
+        for (p, st) in points.iter_mut().zip(&stations) {
+            p.sigma_n -= surface.pressure(st.x[0], st.x[2]);
+        }
+    }
     let stresses = factors(points, per_station, min_segment);
 
     let springs = match (&spec.interface, springs) {

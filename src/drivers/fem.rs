@@ -35,6 +35,13 @@ pub fn solve_scene(scene: &Scene) -> crate::Result<FemSolution> {
 
 /// Solves on the scene's mesh, already read; the wall time counts from `t0`.
 fn solve_mesh(scene: &Scene, mesh: &Mesh, t0: Instant) -> crate::Result<FemSolution> {
+    if scene.water.is_some() {
+        return Err(crate::error::SceneError::invalid(
+            "water",
+            "the FEM reference (`cdem fem`) is a dry continuum: it has no pore water; run `cdem run` or `cdem srm`",
+        )
+        .into());
+    }
     let problem = FemProblem::from_mesh(mesh, &scene.model_spec())?;
     let mut sol = fem::solve(&problem)?;
     sol.summary.wall_s = t0.elapsed().as_secs_f64();

@@ -138,6 +138,7 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         phase1: Some(phase1),
         phase2,
         plastic,
+        water: model.water.as_ref().map(|w| w.summary()),
     };
     Ok(RunResult { model, state, elastic, failure, stress, surface, frames, summary })
 }

@@ -124,6 +124,9 @@ pub struct SrmResult {
     pub reduced: Vec<String>,
     /// Which model answered (see [`Answer`]).
     pub model: Answer,
+    /// The pore water, held fixed through the reduction (absent: dry).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub water: Option<crate::summary::WaterSummary>,
     /// The displacement since the elastic state at the final `hi` (the
     /// mechanism), 3 per node.
     #[serde(skip)]
@@ -383,6 +386,7 @@ pub fn run_srm_from(
         wall_s: t0.elapsed().as_secs_f64(),
         reduced: reduced_strengths(&red.model),
         model: Answer::of(&red.model),
+        water: red.model.water.as_ref().map(|w| w.summary()),
         mechanism,
         mechanism_cells,
     };

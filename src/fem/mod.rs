@@ -105,6 +105,7 @@ pub fn solve(p: &FemProblem) -> crate::Result<FemSolution> {
         phase1: None,
         phase2: None,
         plastic: None,
+        water: None,
     };
     Ok(FemSolution {
         coords: p.coords.clone(),

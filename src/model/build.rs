@@ -113,6 +113,18 @@ pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
                     [0, 1, 2].map(|d| c.iter().map(|&n| x0[n as usize][d]).sum::<f64>() / c.len() as f64)
                 })
                 .collect();
+            // A cell joined to a neighbour through a merged face is inside a larger
+            // impermeable block: no pore pressure in it.
+            let mut in_block = vec![false; mesh.cells.len()];
+            for s in &adj.shared {
+                let nodes = face_nodes(mesh, s.cells[0], s.faces[0]);
+                if interfaces[interface_of(&face_key(&nodes))].mode == JointMode::Merged {
+                    in_block[s.cells[0]] = true;
+                    in_block[s.cells[1]] = true;
+                }
+            }
+            let centroids: Vec<Option<[f64; 3]>> =
+                centroids.into_iter().zip(&in_block).map(|(c, &b)| (!b).then_some(c)).collect();
             let node_of = |c: usize, n: usize| node_of_slot[slot(c, n)];
             let (f_w, model) =
                 super::water::water_forces(w, mesh, &adj, &coords, &x0, &springs, &interfaces, node_of, &centroids)?;

@@ -28,6 +28,8 @@ use crate::physics::water::{crack_pressure, Phreatic};
 pub struct WaterModel {
     /// What ran, for `summary.json` and `srm.json`.
     pub model: &'static str,
+    /// `gamma_w` (N/m^3).
+    pub unit_weight: f64,
     pub surface: Option<Phreatic>,
     /// `(interface group, level)` of each water-filled crack.
     pub cracks: Vec<(String, f64)>,
@@ -37,11 +39,31 @@ pub struct WaterModel {
     /// `u` at each node copy's rest position (Pa), from the surface only.
     #[serde(skip)]
     pub node_pressure: Vec<f64>,
-    /// `u` at each element's centroid (Pa), from the surface only.
+    /// `u` at each element's centroid (Pa), from the surface only; 0 in an
+    /// element joined to a neighbour by a merged interface (inside a larger
+    /// impermeable block). What a plastic block yields on.
     #[serde(skip)]
     pub element_pressure: Vec<f64>,
     /// Resultant of the water forces (N).
     pub resultant: [f64; 3],
+}
+
+impl WaterModel {
+    /// What `summary.json` and `srm.json` say of it.
+    pub fn summary(&self) -> crate::summary::WaterSummary {
+        crate::summary::WaterSummary {
+            model: self.model.to_string(),
+            surface: self.surface.as_ref().map(|s| s.points.clone()),
+            unit_weight: self.unit_weight,
+            hu: match self.surface.as_ref().map(|s| s.hu) {
+                Some(crate::physics::water::Hu::Cos2) => "cos2".into(),
+                _ => "vertical".into(),
+            },
+            cracks: self.cracks.clone(),
+            resultant: self.resultant,
+            wet_springs: self.spring_pressure.iter().filter(|&&u| u > 0.0).count(),
+        }
+    }
 }
 
 /// What UDEC calls it: pressure in the joints, blocks impermeable.
@@ -76,7 +98,7 @@ pub(super) fn water_forces(
     springs: &Springs,
     interfaces: &[Interface],
     node_of: impl Fn(usize, usize) -> u32,
-    element_centroids: &[[f64; 3]],
+    element_centroids: &[Option<[f64; 3]>],
 ) -> Result<(Vec<f64>, WaterModel), Error> {
     let surface = water.phreatic()?;
     let (lo, hi) = bounds(x0);
@@ -164,9 +186,10 @@ pub(super) fn water_forces(
     }
     let resultant = [0, 1, 2].map(|d| (0..x0.len()).map(|i| f[3 * i + d]).sum());
     let node_pressure = x0.iter().map(|&p| at(p)).collect();
-    let element_pressure = element_centroids.iter().map(|&p| at(p)).collect();
+    let element_pressure = element_centroids.iter().map(|p| p.map_or(0.0, at)).collect();
     let model = WaterModel {
         model: JOINT_WATER,
+        unit_weight: water.unit_weight,
         surface,
         cracks: water.crack.iter().map(|c| (c.group.clone(), c.level)).collect(),
         spring_pressure,

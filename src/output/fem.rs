@@ -19,7 +19,7 @@ use crate::mesh::CellKind;
 pub fn vtu_string(sol: &FemSolution) -> String {
     let cells: Vec<(CellKind, Vec<u32>)> =
         sol.cells.iter().map(|c| (c.kind, c.corners().iter().map(|&n| n as u32).collect())).collect();
-    grid_vtu(&sol.coords, &cells, &sol.u, &sol.cell_material, Some(&sol.stress), &[])
+    grid_vtu(&sol.coords, &cells, &sol.u, &sol.cell_material, Some(&sol.stress), &[], &[])
 }
 
 /// Writes `out/summary.json`, `out/final.vtu` and `out/run.pvd`, and for a

@@ -44,12 +44,15 @@ pub fn plastic_fields(cells: &[crate::physics::plastic::CellPlastic]) -> Vec<(&'
 pub fn vtu_string(model: &Model, frame: &Frame) -> String {
     let el = &model.elements;
     let cells: Vec<(CellKind, &[u32])> = (0..el.len()).map(|e| (el.kind[e], el.corners(e))).collect();
-    grid_vtu(&model.x0, &cells, frame.u, &el.material, frame.stress, frame.cells)
+    let pore: Vec<(&'static str, &[f64])> =
+        model.water.iter().map(|w| ("pore_pressure", w.node_pressure.as_slice())).collect();
+    grid_vtu(&model.x0, &cells, frame.u, &el.material, frame.stress, frame.cells, &pore)
 }
 
 /// The `.vtu` text (ASCII VTK XML unstructured grid) of `points`, `cells`
 /// (kind and point ids, written as in the module doc) and the fields: the
-/// point field `displacement` (m, 3 per point) and the cell fields `material`
+/// point field `displacement` (m, 3 per point), the scalar `point_fields`
+/// (`pore_pressure` (Pa) with water), and the cell fields `material`
 /// and, if given, `sxx syy szz syz sxz sxy` (Pa) and `fields`. `cdem run`
 /// and `cdem fem` both write through it.
 pub fn grid_vtu<C: AsRef<[u32]>>(
@@ -59,6 +62,7 @@ pub fn grid_vtu<C: AsRef<[u32]>>(
     material: &[u16],
     stress: Option<&[[f64; 6]]>,
     fields: &[(&'static str, Vec<f64>)],
+    point_fields: &[(&'static str, &[f64])],
 ) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>");
@@ -103,7 +107,15 @@ pub fn grid_vtu<C: AsRef<[u32]>>(
     for d in u.chunks(3) {
         let _ = writeln!(s, "{:e} {:e} {:e}", d[0], d[1], d[2]);
     }
-    s.push_str("</DataArray>\n</PointData>\n<CellData>\n");
+    s.push_str("</DataArray>\n");
+    for (name, values) in point_fields {
+        let _ = writeln!(s, "<DataArray type=\"Float64\" Name=\"{name}\" format=\"ascii\">");
+        for v in values.iter() {
+            let _ = writeln!(s, "{v:e}");
+        }
+        s.push_str("</DataArray>\n");
+    }
+    s.push_str("</PointData>\n<CellData>\n");
     s.push_str("<DataArray type=\"Int32\" Name=\"material\" format=\"ascii\">\n");
     for m in material {
         let _ = write!(s, "{m} ");

@@ -148,6 +148,9 @@ pub fn add_pressure_force(grad: &[[f64; 3]], pressure: f64, f_e: &mut [f64]) {
 /// each (see the module documentation). `grad` are the cell's
 /// volume-averaged corner gradients, `volume` its volume. With
 /// [`Volumetric::Nodal`] the pressure force is left to the caller.
+/// `pore` is the pore pressure `u` of the cell (Pa, compression positive;
+/// 0 when dry): the stress is total, and the cell yields on the effective
+/// stress `sigma' = sigma + u I` (Terzaghi; tension positive).
 #[allow(clippy::too_many_arguments)]
 pub fn plastic_element_force(
     topo: &TetTopology,
@@ -158,6 +161,7 @@ pub fn plastic_element_force(
     nodes: &[u32],
     u: &[f64],
     volumetric: Volumetric,
+    pore: f64,
     hist: &mut [TetPlastic],
     f_e: &mut [f64],
 ) -> CellStep {
@@ -170,7 +174,13 @@ pub fn plastic_element_force(
         let strain = mixed(*eps, e);
         let elastic = [0, 1, 2, 3, 4, 5].map(|i| strain[i] - h.eps_p[i]);
         let trial = lame.stress_voigt(elastic);
-        let (sigma, now) = surface.return_map(lame, trial);
+        let (sigma, now) = match pore {
+            0.0 => surface.return_map(lame, trial),
+            _ => {
+                let (s, now) = surface.return_map(lame, shift_normal(trial, pore));
+                (shift_normal(s, -pore), now)
+            }
+        };
         if now != Yield::Elastic {
             let dep = compliance(lame, [0, 1, 2, 3, 4, 5].map(|i| trial[i] - sigma[i]));
             for i in 0..6 {
@@ -199,6 +209,11 @@ pub fn plastic_element_force(
         add_pressure_force(grad, pressure, f_e);
     }
     CellStep { volumetric: e, pressure: pressure / volume }
+}
+
+/// `sigma + p I` (Voigt).
+fn shift_normal(sigma: [f64; 6], p: f64) -> [f64; 6] {
+    [sigma[0] + p, sigma[1] + p, sigma[2] + p, sigma[3], sigma[4], sigma[5]]
 }
 
 /// What a plastic cell looks like now: its volume-averaged stress (Pa,

@@ -106,6 +106,7 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
                         nodes,
                         u,
                         mode,
+                        model.water.as_ref().map_or(0.0, |w| w.element_pressure[e]),
                         hist,
                         f_e,
                     );
