@@ -160,3 +160,19 @@ fn plastic_blocks_yield_on_the_effective_stress() {
     assert!(all_tension, "every tetrahedron yields in tension");
     assert!((p_wet - (5e3 - 60e3)).abs() < 1e-6 * 50e3, "{p_wet}");
 }
+
+/// The Wulong model after rain slides where the dry one does not
+/// (`wulong/no-slide`, tests/wulong.rs), and the water table's rise at which
+/// it first slides is bracketed to 1 m.
+#[test]
+fn wulong_slides_after_rain() {
+    let (rows, (lo, hi, tried)) = cdem::harness::suite::wulong::wet_rows().unwrap();
+    for (rise, slid, moved) in &tried {
+        println!("rise {rise:.2} m: slid {slid}, max displacement {moved:.3} m");
+    }
+    record("wulong_wet", &rows);
+    println!("stands at {lo:?}, slides at {hi:?}");
+    assert!(rows.iter().all(|c| c.passed()), "{rows:?}");
+    let (lo, hi) = (lo.unwrap(), hi.unwrap());
+    assert!(hi - lo <= cdem::harness::suite::wulong::WET_LEVEL_RESOLUTION + 1e-12);
+}

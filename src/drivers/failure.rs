@@ -97,9 +97,10 @@ pub fn sliding_rule<'a>(model: &'a Model, u_elastic: &'a [f64], params: &Failure
         windows: SLIDING_WINDOWS,
         floor: 0.0,
         displacement: params.sliding_displacement.unwrap_or(f64::INFINITY),
-        travel: match model.has_plastic_blocks() {
-            true => PLASTIC_SLIDING_TRAVEL * (hi[2] - lo[2]).max(0.0),
-            false => 0.0,
+        travel: match (params.sliding_travel, model.has_plastic_blocks()) {
+            (Some(t), _) => t,
+            (None, true) => PLASTIC_SLIDING_TRAVEL * (hi[2] - lo[2]).max(0.0),
+            (None, false) => 0.0,
         },
     };
     let zero = vec![0.0; u_elastic.len()];

@@ -361,8 +361,16 @@ pub const WATER_PLANE_CRACK: Case = Case {
     source: WATER_MD,
 };
 
+/// The Wulong model after rain: a water table parallel to the ground, raised.
+pub const WULONG_WET: Case = Case {
+    name: "Wulong after rain",
+    input: "verification/cases/wulong/wulong-wet.toml",
+    checks: "slides with the water table 1 m below the ground, and the rise at which it first slides (tests/water.rs)",
+    source: WATER_MD,
+};
+
 /// Every case above (the extreme suite is [`extreme_cases`]).
-pub const CASES: [Case; 28] = [
+pub const CASES: [Case; 29] = [
     COLUMN,
     COLUMN_MERGED,
     SLOPE,
@@ -391,6 +399,7 @@ pub const CASES: [Case; 28] = [
     WATER_PLANE_HALF,
     WATER_PLANE_FULL,
     WATER_PLANE_CRACK,
+    WULONG_WET,
 ];
 
 // ---------------------------------------------------------------------------
@@ -1010,6 +1019,8 @@ pub const ROWS: &[RowSpec] = &[
     spec("wulong/snapshot", "Wulong", "failure sequence vs snapshot", Compared(true), WULONG_MD, "tests/wulong.rs"),
     spec("wulong/toe-first", "Wulong", "cracks open at the toe first, later ones higher (observed 2000-2001)", Compared(true), WULONG_MD, "tests/wulong.rs"),
     spec("wulong/no-slide", "Wulong", "no global slide without water", Compared(true), WULONG_MD, "tests/wulong.rs"),
+    spec("wulong/wet-slides", "Wulong after rain", "slides with the water table 1 m below the ground", Compared(true), WATER_MD, "tests/water.rs"),
+    spec("wulong/wet-level", "Wulong after rain", "the water table's rise at which it first slides (bisection to 1 m)", Compared(false), WATER_MD, "tests/water.rs"),
     // The sliding block (tests/sliding_block.rs).
     spec("block/at-rest-15", "block on plane, theta 15, phi 20", "displacement in 0.5 s (m)", Asserted(TOL_BLOCK_AT_REST), SLIDING_BLOCK_MD, "tests/sliding_block.rs").with_reference(0.0),
     spec("block/acceleration-30", "block on plane, theta 30, phi 20", "acceleration (m/s^2)", Asserted(TOL_SLIDING_BLOCK), SLIDING_BLOCK_MD, "tests/sliding_block.rs"),

@@ -178,6 +178,8 @@ fn water(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Error> 
     progress("water: submerged column, infinite slope, plane failure with a water-filled crack");
     let _ = writeln!(rep.md, "## Pore water: effective stress and the closed forms (references/water.md)\n");
     rep.checks.extend(suite::water::rows()?);
+    progress("water: Wulong after rain, the water table's rise at which it first slides (about 2 min)");
+    rep.checks.extend(suite::wulong::wet_rows()?.0);
     Ok(())
 }
 

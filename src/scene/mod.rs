@@ -180,6 +180,12 @@ pub struct FailureParams {
     /// phase 1 passes this bound (m). Default: none (the displacement rate
     /// decides, see [`crate::solver::Sliding`]).
     pub sliding_displacement: Option<f64>,
+    /// The displacement-rate rule decides sliding only once the largest
+    /// displacement since the end of phase 1 has reached this (m). Default:
+    /// 1e-3 of the model's height with plastic blocks
+    /// (`drivers::failure::PLASTIC_SLIDING_TRAVEL`), none (0) otherwise.
+    /// Equal to `sliding_displacement`, a slide is that displacement reached.
+    pub sliding_travel: Option<f64>,
     /// Node-block masses in phase 2 (default true; only where
     /// [`SolverParams::block_masses`] allows them: mass scaling and viscous
     /// damping, lumped masses otherwise). On the paper's
@@ -191,7 +197,7 @@ pub struct FailureParams {
 
 impl Default for FailureParams {
     fn default() -> Self {
-        Self { max_steps: None, stage_every: 500, sliding_displacement: None, block_mass: true }
+        Self { max_steps: None, stage_every: 500, sliding_displacement: None, sliding_travel: None, block_mass: true }
     }
 }
 
@@ -206,6 +212,11 @@ impl FailureParams {
         if let Some(d) = self.sliding_displacement {
             if !(d.is_finite() && d > 0.0) {
                 return Err(SceneError::invalid("failure.sliding_displacement", "must be a finite positive length"));
+            }
+        }
+        if let Some(d) = self.sliding_travel {
+            if !(d.is_finite() && d >= 0.0) {
+                return Err(SceneError::invalid("failure.sliding_travel", "must be a finite length >= 0"));
             }
         }
         Ok(())

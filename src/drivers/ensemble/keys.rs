@@ -117,6 +117,21 @@ pub fn scene_number<'a>(s: &'a mut Scene, key: &str) -> Result<&'a mut f64, Unkn
         [("failure", None), ("sliding_displacement", None)] => {
             s.failure.as_mut().and_then(|f| f.sliding_displacement.as_mut())
         }
+        [("water", None), (f, None)] => s.water.as_mut().and_then(|w| match *f {
+            "rise" => Some(&mut w.rise),
+            "unit_weight" => Some(&mut w.unit_weight),
+            _ => None,
+        }),
+        [("water", None), ("surface", Some(i)), (f, None)] => {
+            s.water.as_mut().and_then(|w| w.surface.get_mut(*i)).and_then(|p| match *f {
+                "x" => Some(&mut p[0]),
+                "z" => Some(&mut p[1]),
+                _ => None,
+            })
+        }
+        [("water", None), ("crack", Some(i)), ("level", None)] => {
+            s.water.as_mut().and_then(|w| w.crack.get_mut(*i)).map(|c| &mut c.level)
+        }
         [("analysis", None), rest @ ..] => s.analysis.as_mut().and_then(|a| analysis(a, rest)),
         [("lem", None), rest @ ..] => s.lem.as_mut().and_then(|l| l.number_mut(rest)),
         _ => None,

@@ -42,6 +42,7 @@ pub const DECLARED: &[(&str, &[&str])] = &[
     ("plastic/gl1-hex-srm", &["verification/plastic/griffiths-lane-1/gl1-hex.toml"]),
     ("slip/", &["verification/cases/slope-slip/slope-slip.toml", "verification/lem/paper-slope.toml", "tests/snapshots/slip_surface__ki_segments_cdem_springs.snap"]),
     ("slope-failure/", &["verification/cases/slope-slip/slope-slip.toml", "verification/cases/slope-slip/slope-slip-stable.toml", "tests/snapshots/progressive_slope__slope_failure_sequence.snap"]),
+    ("wulong/wet-", &["verification/cases/wulong/wulong-wet.toml", "verification/cases/wulong/wulong.geo"]),
     ("wulong/", &["verification/cases/wulong/wulong.toml", "tests/snapshots/wulong__wulong_failure_sequence.snap"]),
     ("block/", &["tests/fixtures/block-on-plane.toml"]),
     ("srm/block-friction", &["verification/cases/block-srm/block-srm-friction.toml"]),

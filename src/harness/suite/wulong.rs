@@ -400,3 +400,94 @@ pub fn analyse(r: &ProgressiveResult, scene: &Scene, seconds: f64) -> Result<Wul
         rows,
     })
 }
+
+/// The Wulong model after rain ([`reg::WULONG_WET`]): does it slide (some
+/// node more than 1 m from its phase-1 position within the step budget) at
+/// the water table's `rise` (m)?
+pub fn slides_at(scene: &Scene, rise: f64) -> Result<(bool, f64), Error> {
+    let mut s = scene.clone();
+    s.output.vtk = false;
+    let w = s.water.as_mut().ok_or_else(|| SceneError::invalid("water", "the wet Wulong case needs [water]"))?;
+    w.rise = rise;
+    let r = crate::drivers::run_scene(&s, &mut |_, _| {})?;
+    let moved = r.summary.phase2.as_ref().map_or(0.0, |p| p.max_displacement);
+    Ok((r.summary.end_state == EndState::GlobalSliding, moved))
+}
+
+/// The rise at which the wet Wulong model first slides, by bisection in
+/// `[0, top]` to [`WET_LEVEL_RESOLUTION`], as strength reduction bisects on
+/// F: `(the highest rise that stood, the lowest that slid, every (rise, slid,
+/// displacement) tried)`. None at either end if the top does not slide or
+/// the bottom does.
+pub type WetLevel = (Option<f64>, Option<f64>, Vec<(f64, bool, f64)>);
+
+/// Resolution of the bisection on the water table's rise (m).
+pub const WET_LEVEL_RESOLUTION: f64 = 1.0;
+
+pub fn wet_level(scene: &Scene, top: f64) -> Result<WetLevel, Error> {
+    let mut tried = Vec::new();
+    let run = |rise: f64, tried: &mut Vec<(f64, bool, f64)>| -> Result<bool, Error> {
+        let (slid, moved) = slides_at(scene, rise)?;
+        tried.push((rise, slid, moved));
+        Ok(slid)
+    };
+    if !run(top, &mut tried)? {
+        return Ok((Some(top), None, tried));
+    }
+    if run(0.0, &mut tried)? {
+        return Ok((None, Some(0.0), tried));
+    }
+    let (mut lo, mut hi) = (0.0, top);
+    while hi - lo > WET_LEVEL_RESOLUTION {
+        let mid = 0.5 * (lo + hi);
+        if run(mid, &mut tried)? {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    Ok((Some(lo), Some(hi), tried))
+}
+
+/// The rows of the wet Wulong case: it slides with the water table 1 m
+/// below the ground (`wulong/wet-slides`), and the rise at which it first
+/// slides (`wulong/wet-level`, reported: ours, the paper gives no level).
+pub fn wet_rows() -> Result<(Vec<Check>, WetLevel), Error> {
+    let t0 = std::time::Instant::now();
+    let scene = reg::WULONG_WET.scene()?;
+    let top = scene.water.as_ref().map_or(0.0, |w| w.rise);
+    let level = wet_level(&scene, top)?;
+    let seconds = t0.elapsed().as_secs_f64();
+    let (lo, hi, tried) = (&level.0, &level.1, &level.2);
+    let slid_at_top = tried.first().is_some_and(|t| t.1);
+    let describe = |t: &[(f64, bool, f64)]| {
+        t.iter()
+            .map(|(r, s, m)| format!("rise {r:.2} m: {} ({m:.3} m)", if *s { "slides" } else { "stands" }))
+            .collect::<Vec<_>>()
+            .join("; ")
+    };
+    let slides = reg::row("wulong/wet-slides")
+        .compared(
+            &format!("{} at rise {top} m (table 1 m below the ground)", if slid_at_top { "slides" } else { "stands" }),
+            "slides (the observed slide after rain)",
+            slid_at_top,
+            seconds,
+        )
+        .with_note(describe(tried));
+    let found = matches!((lo, hi), (Some(_), Some(_)));
+    let ours = match (lo, hi) {
+        (Some(l), Some(h)) => format!(
+            "stands at rise {l:.2} m, slides at {h:.2} m: the table {:.2}-{:.2} m below the ground",
+            20.0 - h,
+            20.0 - l
+        ),
+        _ => format!("no bracket: stands at {lo:?}, slides at {hi:?}"),
+    };
+    let level_row = reg::row("wulong/wet-level").compared(
+        &ours,
+        "slid after a day of rain; the paper gives no water level",
+        found,
+        seconds,
+    );
+    Ok((vec![slides, level_row], level))
+}
