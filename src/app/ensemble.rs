@@ -97,5 +97,5 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> crate::Result<EnsembleSummary> {
 fn finish(out: &Path, summary: &EnsembleSummary, records: &[MemberRecord], lines: Option<&str>) -> crate::Result<()> {
     crate::output::ensemble::write_ensemble(out, summary, records, lines)?;
     let fs: Vec<f64> = records.iter().filter_map(|r| r.fs).collect();
-    crate::output::figures::ensemble::write_figures(out, summary, &fs)
+    crate::output::figures::ensemble::write_figures(out, summary, &fs, records)
 }

@@ -482,3 +482,30 @@ pub fn run_members(
     }
     Ok(out)
 }
+
+/// P(FS < 1) against a drawn variable: the members (those with an FS) in
+/// `bins` equal bins of the value drawn for `key`, as `(bin centre, P(FS < 1),
+/// members)`; empty if no member drew `key`. For the water level of an
+/// ensemble (`water.rise`), the probability of failure against the level
+/// from one ensemble.
+pub fn pf_by(records: &[MemberRecord], key: &str, bins: usize) -> Vec<(f64, f64, usize)> {
+    let pairs: Vec<(f64, f64)> =
+        records.iter().filter_map(|r| Some((r.draws.iter().find(|d| d.key == key)?.value, r.fs?))).collect();
+    let (lo, hi) = pairs.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.0), b.max(p.0)));
+    if pairs.is_empty() || bins == 0 || !(hi > lo) {
+        return Vec::new();
+    }
+    let width = (hi - lo) / bins as f64;
+    let mut count = vec![(0usize, 0usize); bins];
+    for (v, fs) in pairs {
+        let k = (((v - lo) / width) as usize).min(bins - 1);
+        count[k].0 += 1;
+        count[k].1 += usize::from(fs < 1.0);
+    }
+    count
+        .iter()
+        .enumerate()
+        .filter(|(_, c)| c.0 > 0)
+        .map(|(k, &(n, failed))| (lo + (k as f64 + 0.5) * width, failed as f64 / n as f64, n))
+        .collect()
+}

@@ -141,11 +141,61 @@ pub fn convergence(path: &Path, s: &EnsembleSummary) -> crate::Result<()> {
     root.present().map_err(|e| plot_err(path, e))
 }
 
-/// An ensemble's figures in `dir` (none when no member has an FS).
-pub fn write_figures(dir: &Path, s: &EnsembleSummary, fs: &[f64]) -> crate::Result<()> {
+/// An ensemble's figures in `dir` (none when no member has an FS), and
+/// `pf-by-water.png` when a water key was drawn ([`pf_by_variable`]).
+pub fn write_figures(
+    dir: &Path,
+    s: &EnsembleSummary,
+    fs: &[f64],
+    records: &[crate::drivers::ensemble::MemberRecord],
+) -> crate::Result<()> {
     if !fs.is_empty() {
         histogram(&dir.join("fs-histogram.png"), fs, s)?;
         convergence(&dir.join("convergence.png"), s)?;
     }
+    let water_key = records.first().and_then(|r| r.draws.iter().find(|d| d.key.starts_with("water.")));
+    if let Some(key) = water_key.map(|d| d.key.clone()) {
+        let bins = crate::drivers::ensemble::pf_by(records, &key, 8);
+        pf_by_variable(&dir.join("pf-by-water.png"), &key, &bins)?;
+    }
     Ok(())
+}
+
+/// P(FS < 1) in bins of one drawn variable (`(centre, P, members)` per bin).
+pub fn pf_by_variable(path: &Path, key: &str, bins: &[(f64, f64, usize)]) -> crate::Result<()> {
+    init_fonts();
+    if bins.is_empty() {
+        return Ok(());
+    }
+    let root = BitMapBackend::new(path, (900, 560)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| plot_err(path, e))?;
+    let (x0, x1) = (bins[0].0, bins[bins.len() - 1].0);
+    let pad = ((x1 - x0) * 0.08).max(1e-6);
+    let mut chart = ChartBuilder::on(&root)
+        .caption(format!("P(FS < 1) against {key} (members per bin beside each point)"), ("sans-serif", 19))
+        .margin(14)
+        .x_label_area_size(44)
+        .y_label_area_size(60)
+        .build_cartesian_2d((x0 - pad)..(x1 + pad), 0.0..1.05)
+        .map_err(|e| plot_err(path, e))?;
+    chart
+        .configure_mesh()
+        .x_desc(format!("{key} (m)"))
+        .y_desc("P(FS < 1)")
+        .x_label_formatter(&|v| format!("{v:.2}"))
+        .y_label_formatter(&|v| format!("{v:.2}"))
+        .label_style(("sans-serif", 14))
+        .draw()
+        .map_err(|e| plot_err(path, e))?;
+    let c = RGBColor(31, 119, 180);
+    let line: Vec<(f64, f64)> = bins.iter().map(|b| (b.0, b.1)).collect();
+    chart.draw_series(LineSeries::new(line.clone(), c.stroke_width(2))).map_err(|e| plot_err(path, e))?;
+    chart.draw_series(line.iter().map(|&p| Circle::new(p, 5, c.filled()))).map_err(|e| plot_err(path, e))?;
+    chart
+        .draw_series(
+            bins.iter()
+                .map(|b| Text::new(format!("{}", b.2), (b.0, (b.1 + 0.04).min(1.02)), ("sans-serif", 13).into_font())),
+        )
+        .map_err(|e| plot_err(path, e))?;
+    root.present().map_err(|e| plot_err(path, e))
 }
