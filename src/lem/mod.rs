@@ -57,6 +57,7 @@ mod input;
 mod methods;
 mod search;
 mod section;
+mod water;
 
 use std::time::Instant;
 
@@ -68,6 +69,7 @@ pub use geometry::{slices_of, Reject, SliceInfo};
 pub use input::{EntryExitSpec, GridSpec, LemInput, Mode, SceneLem, SearchSpec};
 pub use methods::{evaluate_circle, CircleFs};
 pub use section::{cut_mesh, Facing, LemSection, LowerBound, Material, SectionCut, Zone};
+pub use water::{Pore, TensionCrack, Water, WaterModel};
 
 /// Default number of slices. On a circle near the ACADS 1(a) critical one,
 /// every method's FS at 50 slices is within 1e-4 of its value at 400, and the
@@ -165,6 +167,8 @@ pub struct LemResult {
     /// Trial circles rejected as inadmissible.
     pub circles_rejected: usize,
     pub slices: usize,
+    /// The water model that ran (`pore`: "dry", "surface" or "ru"; the crack).
+    pub water: WaterModel,
     pub wall_s: f64,
 }
 
@@ -189,6 +193,7 @@ fn single_circle(input: &LemInput, circle: Circle) -> Result<LemResult, crate::E
         circles_evaluated: 1,
         circles_rejected: 0,
         slices: input.slices,
+        water: input.section.water().model(),
         wall_s: 0.0,
     };
     for m in input.methods.iter().copied() {
@@ -231,6 +236,7 @@ pub fn table(result: &LemResult) -> String {
             );
         }
     }
+    s += &format!("water: {}\n", result.water.describe());
     s += &format!(
         "{} circles evaluated, {} rejected, {} slices, {:.3} s\n",
         result.circles_evaluated, result.circles_rejected, result.slices, result.wall_s
