@@ -1,6 +1,6 @@
 //! # Limit equilibrium (2D): circular slip surfaces, methods of slices
 //!
-//! A dry 2D section (x horizontal, z up, SI units: m, Pa, N/m^3, forces per
+//! A 2D section (x horizontal, z up, SI units: m, Pa, N/m^3, forces per
 //! metre run) is cut by a trial circle `(xc, zc, r)`. Only the lower arc
 //! `z = zc - sqrt(r^2 - (x - xc)^2)` is a slip surface: the part of it under
 //! the ground between two crossings of the ground polyline, the *exit* on the
@@ -18,12 +18,25 @@
 //! where the base descends in the direction of sliding), exact arc length `l`,
 //! and the strength `c`, `tan(phi)` of the material at the middle of the base.
 //!
+//! **Pore water** (`water.rs`, a file's `[water]`; effective stress, `c`
+//! and `phi` are `c'` and `phi'`): the pore pressure `u` at the middle of each
+//! base, from a phreatic surface (`u = gamma_w h H_u`, `h` the vertical
+//! distance up to it, [`crate::physics::water::Phreatic`]) or from Slide's
+//! pore-pressure ratio (`u = r_u W / b`, the slice's vertical overburden
+//! stress). A **tension crack** (Slide's crack line `d` below the ground):
+//! a circle that crosses the crack line ends there (its crest-most crossing),
+//! closed by a vertical crack to the ground filled to `h_w = fill d`, whose
+//! water pushes the mass toward the toe with `H = gamma_w h_w^2 / 2` at
+//! `z_H = z_crack bottom + h_w / 3`: a driving moment `H (zc - z_H)` about the
+//! centre. Dry: `u = 0`, `H = 0`.
+//!
 //! **Ordinary (Fellenius)**, moment equilibrium about the centre, interslice
-//! forces ignored:
-//! `FS = sum(c l + W cos(alpha) tan(phi)) / sum(W sin(alpha))`.
+//! forces ignored (negative effective normal forces are not clipped, as in
+//! Fredlund & Krahn 1977):
+//! `FS = sum(c l + (W cos(alpha) - u l) tan(phi)) / (sum(W sin(alpha)) + H (zc - z_H) / r)`.
 //!
 //! **Bishop simplified**, moment equilibrium with horizontal interslice forces:
-//! `FS = sum[(c b + W tan(phi)) / m_alpha] / sum(W sin(alpha))`,
+//! `FS = sum[(c b + (W - u b) tan(phi)) / m_alpha] / (sum(W sin(alpha)) + H (zc - z_H) / r)`,
 //! `m_alpha = cos(alpha) + sin(alpha) tan(phi) / FS`, with `b = l cos(alpha)`;
 //! Halley's method (Newton with the second derivative) on
 //! `FS sum(W sin(alpha)) - sum[...] = 0` from the ordinary
@@ -34,10 +47,12 @@
 //!
 //! **Spencer (1967)**, force and moment equilibrium with parallel interslice
 //! resultants `Q` inclined at a constant `theta`:
-//! `Q = (R / FS - D) / m`, `R = c l + W cos(alpha) tan(phi)`,
-//! `D = W sin(alpha)`, `m = cos(alpha - theta) + sin(alpha - theta) tan(phi) / FS`;
+//! `Q = (R / FS - D) / m`, `R = c l + (W cos(alpha) - H sin(alpha) - u l) tan(phi)`,
+//! `D = W sin(alpha) + H cos(alpha)` (`H` on the crest-side slice only),
+//! `m = cos(alpha - theta) + sin(alpha - theta) tan(phi) / FS`;
 //! force equilibrium `sum Q = 0`, moment equilibrium about the centre
-//! `sum Q cos(alpha - theta) = 0`. Solved for `(FS, theta)` by a damped 2D
+//! `r sum Q cos(alpha - theta) = H ((zc - z_H) - r cos(alpha_n))` (`H` acts at
+//! `z_H`, not at the base of its slice). Solved for `(FS, theta)` by a damped 2D
 //! Newton iteration from `(FS_Bishop, 0)` (at `theta = 0` the moment equation
 //! is Bishop's), with a bracketing fallback on `theta` if Newton fails.
 //!

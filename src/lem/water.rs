@@ -114,7 +114,7 @@ impl Water {
             let xs =
                 ground.iter().map(|g| g[0]).chain(p.points.iter().map(|q| q[0]).filter(|x| *x >= gx0 && *x <= gx1));
             for x in xs {
-                let (zw, zg) = (p.level(x), super::section::polyline_z(ground, x));
+                let (zw, zg) = (p.level(x), ground_z(ground, x));
                 if zw > zg + tol {
                     return Err(SceneError::invalid(
                         "water.surface",
@@ -168,4 +168,11 @@ impl Water {
         let crack = self.crack.map(|c| TensionCrack { zone: c.zone.map(|[a, b]| [-b, -a]), ..c });
         Water { pore, crack, unit_weight: self.unit_weight }
     }
+}
+
+/// The ground's height at `x` inside its x-range (linear between points).
+fn ground_z(g: &[[f64; 2]], x: f64) -> f64 {
+    let k = g.windows(2).position(|w| x <= w[1][0]).unwrap_or(g.len() - 2);
+    let (a, b) = (g[k], g[k + 1]);
+    a[1] + (b[1] - a[1]) * (x - a[0]) / (b[0] - a[0])
 }
