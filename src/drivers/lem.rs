@@ -23,7 +23,21 @@ pub fn scene_lem_input(scene: &Scene) -> crate::Result<LemInput> {
     let unit_weight_of = |group: &str| {
         scene.material.iter().find(|m| m.group == group).map(|m| m.density * gravity).filter(|w| *w > 0.0)
     };
-    LemInput::from_scene(lem, &mesh, &unit_weight_of)
+    // The scene's [water]: its (raised) phreatic surface. Its
+    // [[water.crack]] are interface groups of the mesh, which the section
+    // does not carry: refused rather than dropped.
+    let water =
+        match &scene.water {
+            Some(w) if !w.crack.is_empty() => return Err(SceneError::invalid(
+                "water.crack",
+                "`cdem lem` on a scene uses the [water] surface only: its [[water.crack]] are interface groups of the \
+                 mesh, which the LEM section does not carry (give the LEM a file with water.crack_depth instead)",
+            )
+            .into()),
+            Some(w) => w.phreatic()?,
+            None => None,
+        };
+    LemInput::from_scene(lem, &mesh, &unit_weight_of, water.as_ref())
 }
 
 /// A LEM input file, or a scene (a TOML file with a `[mesh]` table).

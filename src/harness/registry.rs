@@ -1083,6 +1083,18 @@ pub const ROWS: &[RowSpec] = &[
     spec("perf/ensemble/members-per-hour", ENSEMBLE_CASE, "members per hour, elastic + eq. 21 K + phase-2 end state, one process (against the SRM goal of 100)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs").may_skip(ENSEMBLE_PERF_SKIP),
     spec("perf/ensemble/srm-members-per-hour", ENSEMBLE_CASE, "members per hour with cdem srm per member, one process (goal >= 100)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs").may_skip(ENSEMBLE_PERF_SKIP),
     spec("perf/ensemble/two-shards-speedup", ENSEMBLE_CASE, "one process (its threads) / 2 concurrent shards + merge on the same cores, wall time (goal >= 1)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs").may_skip(ENSEMBLE_PERF_SKIP),
+    // LEM with pore water (tests/lem_water.rs; harness::suite::lem_water; references/lem.md, "With water").
+    spec("lem/water-fk-ru/ordinary-vs-fk", FK_RU_CASE, "ordinary FS on the F&K circle vs Fredlund & Krahn", Asserted(TOL_LEM_WATER), LEM_MD, "tests/lem_water.rs").with_reference(FK_RU_ORDINARY.value),
+    spec("lem/water-fk-ru/bishop-vs-fk", FK_RU_CASE, "Bishop FS on the F&K circle vs Fredlund & Krahn", Asserted(TOL_LEM_WATER), LEM_MD, "tests/lem_water.rs").with_reference(FK_RU_BISHOP.value),
+    spec("lem/water-fk-ru/spencer-vs-fk", FK_RU_CASE, "Spencer FS on the F&K circle vs Fredlund & Krahn", Asserted(TOL_LEM_WATER), LEM_MD, "tests/lem_water.rs").with_reference(FK_RU_SPENCER.value),
+    spec("lem/water-fk-ru/bishop-vs-slide", FK_RU_CASE, "Bishop FS on the F&K circle vs Slide", Asserted(TOL_LEM_WATER), LEM_MD, "tests/lem_water.rs").with_reference(FK_RU_SLIDE_BISHOP.value),
+    spec("lem/water-fk-ru/spencer-vs-slide", FK_RU_CASE, "Spencer FS on the F&K circle vs Slide", Asserted(TOL_LEM_WATER), LEM_MD, "tests/lem_water.rs").with_reference(FK_RU_SLIDE_SPENCER.value),
+    spec("lem/water-arai-tagyo/bishop-vs-slide", ARAI_TAGYO_CASE, "Bishop FS (search) vs Slide", Asserted(TOL_LEM_WATER), LEM_MD, "tests/lem_water.rs").with_reference(ARAI_TAGYO_SLIDE_BISHOP.value),
+    spec("lem/water-arai-tagyo/spencer-vs-slide", ARAI_TAGYO_CASE, "Spencer FS (search) vs Slide", Asserted(TOL_LEM_WATER), LEM_MD, "tests/lem_water.rs").with_reference(ARAI_TAGYO_SLIDE_SPENCER.value),
+    spec("lem/water-arai-tagyo/bishop-vs-paper", ARAI_TAGYO_CASE, "Bishop FS (search) vs Arai & Tagyo's own", Reported(Goal::Within(TOL_LEM_WATER)), LEM_MD, "tests/lem_water.rs").with_reference(ARAI_TAGYO_PAPER.value),
+    spec("lem/water-acads-1b/bishop-vs-slide", ACADS_1B_CASE, "Bishop FS (search) vs Slide", Asserted(TOL_LEM_WATER), LEM_MD, "tests/lem_water.rs").with_reference(ACADS_1B_SLIDE_BISHOP.value),
+    spec("lem/water-acads-1b/spencer-vs-slide", ACADS_1B_CASE, "Spencer FS (search) vs Slide", Asserted(TOL_LEM_WATER), LEM_MD, "tests/lem_water.rs").with_reference(ACADS_1B_SLIDE_SPENCER.value),
+    spec("lem/water-acads-1b/bishop-vs-referee", ACADS_1B_CASE, "Bishop FS (search) vs the ACADS referee", Reported(Goal::Within(TOL_LEM_WATER)), LEM_MD, "tests/lem_water.rs").with_reference(ACADS_1B_REFEREE.value),
 ];
 
 /// Every row of the validation table, in its order: [`ROWS`] with the
@@ -1599,3 +1611,42 @@ pub const TOL_ENSEMBLE_MEAN: f64 = 0.004;
 /// its 95 % Wilson interval at 4000 members (0.0089 / 0.0912); the test also
 /// asserts that the exact value lies inside the interval itself.
 pub const TOL_ENSEMBLE_PF: f64 = 0.10;
+
+// LEM with pore water (references/lem.md, "With water"; harness::suite::lem_water).
+/// Fredlund & Krahn (1977) case 3 (r_u = 0.25), its specified circle.
+pub const FK_RU_CASE: &str = "Fredlund & Krahn (1977) case 3, r_u 0.25, circle (120, 90) r 80";
+pub const LEM_FK_RU: &str = "verification/lem/fredlund-krahn-1977-ru.toml";
+pub const FK_RU_ORDINARY: Reference =
+    Reference { value: 1.607, source: LEM_MD, what: "Fredlund & Krahn (1977) case 3, ordinary method" };
+pub const FK_RU_BISHOP: Reference =
+    Reference { value: 1.766, source: LEM_MD, what: "Fredlund & Krahn (1977) case 3, Bishop simplified" };
+pub const FK_RU_SPENCER: Reference =
+    Reference { value: 1.761, source: LEM_MD, what: "Fredlund & Krahn (1977) case 3, Spencer" };
+pub const FK_RU_SLIDE_BISHOP: Reference =
+    Reference { value: 1.763, source: LEM_MD, what: "Slide2 verification manual problem 21, r_u case, Bishop" };
+pub const FK_RU_SLIDE_SPENCER: Reference =
+    Reference { value: 1.760, source: LEM_MD, what: "Slide2 verification manual problem 21, r_u case, Spencer" };
+/// Arai & Tagyo (1985) example 3: a homogeneous slope with a water table.
+pub const ARAI_TAGYO_CASE: &str = "Arai & Tagyo (1985) example 3, water table, circular search";
+pub const LEM_ARAI_TAGYO: &str = "verification/lem/arai-tagyo-1985-water.toml";
+pub const ARAI_TAGYO_SLIDE_BISHOP: Reference =
+    Reference { value: 1.118, source: LEM_MD, what: "Slide2 verification manual problem 16, Bishop" };
+pub const ARAI_TAGYO_SLIDE_SPENCER: Reference =
+    Reference { value: 1.118, source: LEM_MD, what: "Slide2 verification manual problem 16, Spencer" };
+pub const ARAI_TAGYO_PAPER: Reference = Reference {
+    value: 1.138,
+    source: LEM_MD,
+    what: "Arai & Tagyo (1985) example 3, their Bishop (as quoted by Slide2)",
+};
+/// ACADS (1989) problem 1(b): a water-filled tension crack.
+pub const ACADS_1B_CASE: &str = "ACADS 1(b), water-filled tension crack 3.8136 m, circular search";
+pub const LEM_ACADS_1B: &str = "verification/lem/acads-1b.toml";
+pub const ACADS_1B_SLIDE_BISHOP: Reference =
+    Reference { value: 1.596, source: LEM_MD, what: "Slide2 verification manual problem 2, Bishop" };
+pub const ACADS_1B_SLIDE_SPENCER: Reference =
+    Reference { value: 1.592, source: LEM_MD, what: "Slide2 verification manual problem 2, Spencer" };
+pub const ACADS_1B_REFEREE: Reference =
+    Reference { value: 1.65, source: LEM_MD, what: "ACADS (1989) problem 1(b), referee FS (as quoted by Slide2)" };
+/// Our FS with water against the published ones: 1 % (references/lem.md,
+/// "With water"; measured at most 0.45 %, all below the published values).
+pub const TOL_LEM_WATER: f64 = 0.01;

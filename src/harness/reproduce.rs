@@ -368,6 +368,7 @@ fn limit_equilibrium(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result
     rep.checks.extend(validation::acads_rows(&acads));
     rep.checks.push(validation::paper_lem_row(&paper));
     rep.checks.extend(crate::harness::suite::taylor::rows()?);
+    rep.checks.extend(crate::harness::suite::lem_water::rows()?);
     Ok(paper.fs.bishop.unwrap_or(f64::NAN))
 }
 

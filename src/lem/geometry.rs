@@ -11,6 +11,7 @@
 //! centre-line column `W = b sum(gamma_k h_k)`.
 
 use super::section::{polyline_z, Frame, LowerBound};
+use super::water::{Pore, TensionCrack};
 use super::{Circle, LemSection};
 
 /// Why a trial circle is not an admissible slip surface.
@@ -63,8 +64,22 @@ pub(crate) struct Slices {
     /// `sin(alpha) tan_phi` ([`super::methods::bishop`]).
     pub bishop_a: Vec<f64>,
     pub bishop_b: Vec<f64>,
-    /// The ordinary method's `sum(c l + W cos(alpha) tan_phi)` (N/m).
+    /// The ordinary method's `sum(c l + (W cos(alpha) - u l) tan_phi)` (N/m).
     pub resist_ordinary: f64,
+    /// Pore pressure at the middle of each base (Pa).
+    pub u: Vec<f64>,
+    /// Spencer's per-slice `R = c l + (W cos(alpha) - H sin(alpha) - u l) tan_phi`
+    /// and `D = W sin(alpha) + H cos(alpha)` (`H` the crack water force, on
+    /// the crest-side slice only) ([`super::methods::spencer`]).
+    pub spencer_r: Vec<f64>,
+    pub spencer_d: Vec<f64>,
+    /// Spencer's moment equation `sum Q cos(alpha - theta) = K`,
+    /// `K = H ((zc - z_H) - r cos(alpha_n)) / r` (0 without a crack force).
+    pub moment_k: f64,
+    /// The water force in the tension crack `H = gamma_w h_w^2 / 2` (N/m)
+    /// and its height `z_H` (m); 0 if the circle ends at no crack.
+    pub crack_force: f64,
+    pub crack_z: f64,
     /// Scratch: z of zone-edge crossings in one column.
     column: Vec<f64>,
     /// Scratch, at the `n + 1` slice ends: x, `u = x - xc`,
@@ -73,7 +88,7 @@ pub(crate) struct Slices {
     ub: Vec<f64>,
     wb: Vec<f64>,
     zg: Vec<f64>,
-    /// `sum W sin(alpha)` (N/m).
+    /// The driving moment over `r`: `sum W sin(alpha) + H (zc - z_H) / r` (N/m).
     pub drive: f64,
     pub x_exit: f64,
     pub x_entry: f64,
@@ -91,6 +106,9 @@ impl Slices {
             tan_phi: v(),
             bishop_a: v(),
             bishop_b: v(),
+            u: v(),
+            spencer_r: v(),
+            spencer_d: v(),
             column: Vec::with_capacity(16),
             xb: v(),
             ub: v(),
@@ -301,6 +319,9 @@ fn sized(v: &mut Vec<f64>, n: usize) {
 /// `S(u1) - S(u0) = (u1 w1 - u0 w0 + r^2 (beta1 - beta0)) / 2`.
 pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut Slices) -> Result<(), Reject> {
     let (xx, xe) = cut(f, c)?;
+    // A tension crack cuts the mass at the crack line's crest-most crossing.
+    let crack = f.water.crack.and_then(|k| crack_cut(f, c, xx, xe, k).map(|x| (x, k)));
+    let xe = crack.map_or(xe, |(x, _)| x);
     if !above_lower_bound(f, c, xx, xe) {
         return Err(Reject::BelowLowerBound);
     }
@@ -442,6 +463,41 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
         s.bishop_a[i] = strength.c * s.l[i] * s.cos_a[i] + w * strength.tan_phi;
         s.bishop_b[i] = s.sin_a[i] * strength.tan_phi;
     }
+    // Pass 4: pore water (module docs of `lem`): u at the middle of each
+    // base, the effective normal forces, and the crack's water force.
+    for v in [&mut s.u, &mut s.spencer_r, &mut s.spencer_d] {
+        sized(v, n);
+    }
+    let water = &f.water;
+    for i in 0..n {
+        let (w, sa, ca, l, t) = (s.w[i], s.sin_a[i], s.cos_a[i], s.l[i], s.tan_phi[i]);
+        let u = match &water.pore {
+            Pore::Dry => 0.0,
+            Pore::Surface(p) => p.pressure(c.xc + r * sa, c.zc - r * ca),
+            Pore::Ru(ru) => ru * w / (s.xb[i + 1] - s.xb[i]),
+        };
+        s.u[i] = u;
+        resist -= u * l * t;
+        s.bishop_a[i] -= u * l * ca * t;
+        s.spencer_r[i] = s.c[i] * l + (w * ca - u * l) * t;
+        s.spencer_d[i] = w * sa;
+    }
+    let (mut force, mut z_h, mut k) = (0.0, 0.0, 0.0);
+    if let Some((xt, crack)) = crack {
+        let h_w = crack.fill * crack.depth;
+        force = 0.5 * water.unit_weight * h_w * h_w;
+        z_h = z_arc(c, xt) + h_w / 3.0;
+        let last = n - 1;
+        let (sa, ca) = (s.sin_a[last], s.cos_a[last]);
+        s.spencer_r[last] -= force * sa * s.tan_phi[last];
+        s.spencer_d[last] += force * ca;
+        k = force * ((c.zc - z_h) - r * ca) / r;
+        drive += force * (c.zc - z_h) / r;
+        gross += (force * (c.zc - z_h) / r).abs();
+    }
+    s.crack_force = force;
+    s.crack_z = z_h;
+    s.moment_k = k;
     if !deep {
         return Err(Reject::Sliver);
     }
@@ -453,6 +509,41 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
     s.drive = drive;
     s.resist_ordinary = resist;
     Ok(())
+}
+
+/// Where the arc meets a tension crack's line `z = ground - depth` (inside
+/// its zone) nearest the entry `xe`: scanning from the crest side toward the
+/// exit `xx`, the first point where the arc passes from above the crack line
+/// to below it (256 steps, then bisection to 1e-12 of the width). `None`: the
+/// arc does not cross the crack line there (the whole circle is used).
+fn crack_cut(f: &Frame, c: Circle, xx: f64, xe: f64, k: TensionCrack) -> Option<f64> {
+    // The frame's zone is in the internal frame already (Water::mirrored).
+    let (lo, hi) = k.zone.map_or((xx, xe), |[a, b]| (a.max(xx), b.min(xe)));
+    if lo >= hi {
+        return None;
+    }
+    let below = |x: f64| polyline_z(&f.ground, x) - z_arc(c, x) - k.depth;
+    const STEPS: usize = 256;
+    let (mut a, mut ga) = (hi, below(hi));
+    for j in 1..=STEPS {
+        let b = hi - (hi - lo) * j as f64 / STEPS as f64;
+        let gb = below(b);
+        if ga < 0.0 && gb >= 0.0 {
+            // a: above the crack line (crest side), b: below it.
+            let (mut up, mut down) = (a, b);
+            while (up - down).abs() > 1e-12 * (xe - xx) {
+                let m = 0.5 * (up + down);
+                if below(m) < 0.0 {
+                    up = m;
+                } else {
+                    down = m;
+                }
+            }
+            return Some(0.5 * (up + down));
+        }
+        (a, ga) = (b, gb);
+    }
+    None
 }
 
 /// `sum gamma_k h_k` on the vertical line x between the arc and the ground.
@@ -504,6 +595,8 @@ pub struct SliceInfo {
     pub base_length: f64,
     pub cohesion: f64,
     pub tan_phi: f64,
+    /// Pore pressure at the middle of the base (Pa).
+    pub pore_pressure: f64,
 }
 
 /// The slices of a circle (no minimum depth or width), in order of x.
@@ -524,6 +617,7 @@ pub fn slices_of(section: &LemSection, circle: Circle, n: usize) -> Result<Vec<S
                 base_length: s.l[i],
                 cohesion: s.c[i],
                 tan_phi: s.tan_phi[i],
+                pore_pressure: s.u[i],
             }
         })
         .collect();

@@ -33,6 +33,15 @@
 //! # xc = 35.0
 //! # zc = 50.0
 //! # r = 25.0
+//!
+//! [water]                       # optional: pore water (module docs of `lem`)
+//! surface = [[20.0, 25.0], [70.0, 32.0]]  # phreatic surface z_w(x), x increasing, spanning the ground
+//! # ru = 0.25                   # instead of surface: u = r_u sigma_v (Slide's pore-pressure ratio)
+//! unit_weight = 9810.0          # gamma_w (N/m^3), default 9810
+//! hu = "vertical"               # or "cos2" (with surface only)
+//! crack_depth = 3.8             # optional: a tension crack line this deep below the ground (m)
+//! crack_fill = 1.0              # its filled fraction, 0 (dry, the default) to 1 (full)
+//! crack_zone = [50.0, 70.0]     # optional: the x-range of the crack line (default: the whole ground)
 //! ```
 
 use std::path::{Path, PathBuf};
@@ -40,8 +49,10 @@ use std::path::{Path, PathBuf};
 use serde::Deserialize;
 
 use super::section::{Facing, LemSection, LowerBound, Material, Zone};
+use super::water::{Pore, TensionCrack, Water};
 use super::{Circle, Method, DEFAULT_SLICES};
 use crate::error::SceneError;
+use crate::physics::water::{Hu, Phreatic, DEFAULT_UNIT_WEIGHT};
 
 /// A validated LEM input.
 #[derive(Debug, Clone, PartialEq)]
@@ -150,6 +161,7 @@ struct FileToml {
     analysis: AnalysisToml,
     search: Option<SearchToml>,
     circle: Option<Circle>,
+    water: Option<WaterToml>,
     /// Read and checked by `cdem ensemble` (the scene's `EnsembleSpec`); the
     /// LEM itself runs the file's own (mean) values.
     #[allow(dead_code)]
@@ -249,6 +261,56 @@ struct EntryExitToml {
     radii: usize,
 }
 
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct WaterToml {
+    surface: Option<Vec<[f64; 2]>>,
+    ru: Option<f64>,
+    #[serde(default = "default_water_unit_weight")]
+    unit_weight: f64,
+    hu: Option<Hu>,
+    crack_depth: Option<f64>,
+    crack_fill: Option<f64>,
+    crack_zone: Option<[f64; 2]>,
+}
+
+fn default_water_unit_weight() -> f64 {
+    DEFAULT_UNIT_WEIGHT
+}
+
+/// `[water]` of a LEM file (checked against the ground by [`LemSection::with_water`]).
+fn water_of(t: WaterToml) -> Result<Water, SceneError> {
+    let pore = match (t.surface, t.ru) {
+        (Some(_), Some(_)) => {
+            return Err(SceneError::invalid("water.ru", "give either water.surface or water.ru, not both"))
+        }
+        (Some(points), None) => Pore::Surface(Phreatic::new("water", points, t.unit_weight, t.hu.unwrap_or_default())?),
+        (None, Some(ru)) => {
+            if t.hu.is_some() {
+                return Err(SceneError::invalid("water.hu", "only with water.surface (r_u has no surface)"));
+            }
+            Pore::Ru(ru)
+        }
+        (None, None) => {
+            if t.hu.is_some() {
+                return Err(SceneError::invalid("water.hu", "only with water.surface"));
+            }
+            Pore::Dry
+        }
+    };
+    let crack = match t.crack_depth {
+        Some(depth) => Some(TensionCrack { depth, fill: t.crack_fill.unwrap_or(0.0), zone: t.crack_zone }),
+        None if t.crack_fill.is_some() || t.crack_zone.is_some() => {
+            return Err(SceneError::invalid("water.crack_depth", "missing: water.crack_fill and crack_zone need it"))
+        }
+        None => None,
+    };
+    if pore == Pore::Dry && crack.is_none() {
+        return Err(SceneError::invalid("water", "gives none of surface, ru, crack_depth"));
+    }
+    Ok(Water { pore, crack, unit_weight: t.unit_weight })
+}
+
 fn check_count(key: &str, n: usize, lo: usize, hi: usize) -> Result<(), SceneError> {
     if n < lo || n > hi {
         return Err(SceneError::invalid(key, format!("must be in [{lo}, {hi}], got {n}")));
@@ -344,7 +406,10 @@ impl LemInput {
                 None => background = Some(material),
             }
         }
-        let section = LemSection::new(ground, lower, background, zones, s.facing)?;
+        let mut section = LemSection::new(ground, lower, background, zones, s.facing)?;
+        if let Some(w) = file.water {
+            section = section.with_water(water_of(w)?)?;
+        }
 
         let (slices, methods, mode) = analysis_and_mode(file.analysis, file.circle, file.search)?;
         Ok(LemInput { section, slices, methods, mode })
@@ -540,11 +605,13 @@ fn in_scene(e: SceneError) -> SceneError {
 impl LemInput {
     /// The LEM of a scene's mesh: `lem` is the scene's `[lem]` table,
     /// `unit_weight_of(group)` the weight per volume (N/m^3) of a volume
-    /// group from the scene's own materials and gravity, if it has one.
+    /// group from the scene's own materials and gravity, if it has one, and
+    /// `water` the scene's phreatic surface (`[water]`, raised), if any.
     pub fn from_scene(
         lem: &SceneLem,
         mesh: &crate::mesh::Mesh,
         unit_weight_of: &dyn Fn(&str) -> Option<f64>,
+        water: Option<&Phreatic>,
     ) -> crate::Result<Self> {
         let y_plane = lem.y_plane.unwrap_or_else(|| mesh.nodes.iter().map(|p| p[1]).fold(f64::INFINITY, f64::min));
         let cut = super::section::cut_mesh(mesh, y_plane)?;
@@ -603,7 +670,11 @@ impl LemInput {
             });
             (None, zones)
         };
-        let section = LemSection::new(ground, lower, background, zones, lem.facing).map_err(in_scene)?;
+        let mut section = LemSection::new(ground, lower, background, zones, lem.facing).map_err(in_scene)?;
+        if let Some(p) = water {
+            let water = Water { pore: Pore::Surface(p.clone()), crack: None, unit_weight: p.unit_weight };
+            section = section.with_water(water)?;
+        }
         let analysis = AnalysisToml { slices: lem.slices, methods: lem.methods.clone() };
         let (slices, methods, mode) = analysis_and_mode(analysis, lem.circle, lem.search.clone()).map_err(in_scene)?;
         Ok(LemInput { section, slices, methods, mode })

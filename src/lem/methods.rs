@@ -13,14 +13,15 @@ const MAX_ITER: usize = 200;
 /// Spencer: Newton stops when both updates are below this (F relative, theta rad).
 const SPENCER_TOL: f64 = 1e-11;
 
-/// Ordinary (Fellenius): `F = sum(c l + W cos(alpha) tan_phi) / sum(W sin(alpha))`.
+/// Ordinary (Fellenius): `F = sum(c l + (W cos(alpha) - u l) tan_phi) / (sum(W sin(alpha)) + H (zc - z_H) / r)`.
 pub(crate) fn ordinary(s: &Slices) -> Option<f64> {
     let f = s.resist_ordinary / s.drive;
     (f.is_finite() && f > 0.0).then_some(f)
 }
 
 /// Bishop simplified: the root of
-/// `g(F) = F sum(W sin(alpha)) - sum[(c l cos(alpha) + W tan_phi) / m_alpha(F)]`,
+/// `g(F) = F D - sum[(c b + (W - u b) tan_phi) / m_alpha(F)]`, `b = l cos(alpha)`,
+/// `D = sum(W sin(alpha)) + H (zc - z_H) / r` (the crack water force's moment over `r`),
 /// `m_alpha = cos(alpha) + sin(alpha) tan_phi / F`, by Halley's method (Newton
 /// with the second derivative, cubic convergence: 3.0 passes per grid circle
 /// against Newton's 3.8) from `f0` (the ordinary F), stopping when
@@ -40,7 +41,7 @@ pub(crate) fn bishop_counted(s: &Slices, f0: f64) -> Option<(f64, usize)> {
     for pass in 1..=MAX_ITER {
         let inv_f = 1.0 / f;
         // resist = sum a / m, slope = sum a b / m^2 = F^2 d(resist)/dF.
-        // a = c l cos(alpha) + W tan_phi, b = sin(alpha) tan_phi (from fill_slices).
+        // a = c b + (W - u b) tan_phi, b = sin(alpha) tan_phi (from fill_slices).
         let (mut resist, mut slope, mut curve, mut bad) = (0.0, 0.0, 0.0, false);
         for ((&a, &b), &cos_a) in s.bishop_a.iter().zip(&s.bishop_b).zip(&s.cos_a) {
             let m_alpha = cos_a + b * inv_f;
@@ -74,11 +75,13 @@ pub(crate) fn bishop_counted(s: &Slices, f0: f64) -> Option<(f64, usize)> {
     None
 }
 
-/// Spencer's residuals: `[sum Q, sum Q cos(alpha - theta)]` and their Jacobian
-/// in `(F, theta)`. `None` if some `m <= 0`.
+/// Spencer's residuals: `[sum Q, sum Q cos(alpha - theta) - K]` and their
+/// Jacobian in `(F, theta)`, `Q = (R / F - D) / m` with the slices' `R`, `D`
+/// and `K` (effective stress, crack water force: `Slices::spencer_r`). `None`
+/// if some `m <= 0`.
 fn spencer_residuals(s: &Slices, f: f64, theta: f64) -> Option<([f64; 2], [[f64; 2]; 2])> {
     let (st, ct) = theta.sin_cos();
-    let (mut r, mut j) = ([0.0; 2], [[0.0; 2]; 2]);
+    let (mut r, mut j) = ([0.0, -s.moment_k], [[0.0; 2]; 2]);
     for i in 0..s.len() {
         let (sa, ca, t) = (s.sin_a[i], s.cos_a[i], s.tan_phi[i]);
         let cd = ca * ct + sa * st; // cos(alpha - theta)
@@ -87,8 +90,7 @@ fn spencer_residuals(s: &Slices, f: f64, theta: f64) -> Option<([f64; 2], [[f64;
         if m <= 0.0 {
             return None;
         }
-        let big_r = s.c[i] * s.l[i] + s.w[i] * ca * t;
-        let d = s.w[i] * sa;
+        let (big_r, d) = (s.spencer_r[i], s.spencer_d[i]);
         let q = (big_r / f - d) / m;
         let dm_df = -sd * t / (f * f);
         let dm_dtheta = sd - cd * t / f;
@@ -149,7 +151,8 @@ fn spencer_newton(s: &Slices, f0: f64) -> Option<(f64, f64)> {
 }
 
 /// F from one equilibrium equation at fixed theta (`moment`: weights
-/// `cos(alpha - theta)`), by fixed-point iteration `F = sum(R w/m) / sum(D w/m)`.
+/// `cos(alpha - theta)` and right-hand side `K`), by fixed-point iteration
+/// `F = sum(R w/m) / (sum(D w/m) + K)`.
 fn spencer_fs_at(s: &Slices, theta: f64, moment: bool, f0: f64) -> Option<f64> {
     let (st, ct) = theta.sin_cos();
     let mut f = f0;
@@ -163,10 +166,10 @@ fn spencer_fs_at(s: &Slices, theta: f64, moment: bool, f0: f64) -> Option<f64> {
                 return None;
             }
             let w = if moment { cd } else { 1.0 };
-            num += (s.c[i] * s.l[i] + s.w[i] * ca * t) * w / m;
-            den += s.w[i] * sa * w / m;
+            num += s.spencer_r[i] * w / m;
+            den += s.spencer_d[i] * w / m;
         }
-        let f_new = num / den;
+        let f_new = num / (den + if moment { s.moment_k } else { 0.0 });
         if !(f_new.is_finite() && f_new > 0.0) {
             return None;
         }

@@ -1,6 +1,6 @@
 //! # Limit equilibrium (2D): circular slip surfaces, methods of slices
 //!
-//! A dry 2D section (x horizontal, z up, SI units: m, Pa, N/m^3, forces per
+//! A 2D section (x horizontal, z up, SI units: m, Pa, N/m^3, forces per
 //! metre run) is cut by a trial circle `(xc, zc, r)`. Only the lower arc
 //! `z = zc - sqrt(r^2 - (x - xc)^2)` is a slip surface: the part of it under
 //! the ground between two crossings of the ground polyline, the *exit* on the
@@ -18,12 +18,25 @@
 //! where the base descends in the direction of sliding), exact arc length `l`,
 //! and the strength `c`, `tan(phi)` of the material at the middle of the base.
 //!
+//! **Pore water** (`water.rs`, a file's `[water]`; effective stress, `c`
+//! and `phi` are `c'` and `phi'`): the pore pressure `u` at the middle of each
+//! base, from a phreatic surface (`u = gamma_w h H_u`, `h` the vertical
+//! distance up to it, [`crate::physics::water::Phreatic`]) or from Slide's
+//! pore-pressure ratio (`u = r_u W / b`, the slice's vertical overburden
+//! stress). A **tension crack** (Slide's crack line `d` below the ground):
+//! a circle that crosses the crack line ends there (its crest-most crossing),
+//! closed by a vertical crack to the ground filled to `h_w = fill d`, whose
+//! water pushes the mass toward the toe with `H = gamma_w h_w^2 / 2` at
+//! `z_H = z_crack bottom + h_w / 3`: a driving moment `H (zc - z_H)` about the
+//! centre. Dry: `u = 0`, `H = 0`.
+//!
 //! **Ordinary (Fellenius)**, moment equilibrium about the centre, interslice
-//! forces ignored:
-//! `FS = sum(c l + W cos(alpha) tan(phi)) / sum(W sin(alpha))`.
+//! forces ignored (negative effective normal forces are not clipped, as in
+//! Fredlund & Krahn 1977):
+//! `FS = sum(c l + (W cos(alpha) - u l) tan(phi)) / (sum(W sin(alpha)) + H (zc - z_H) / r)`.
 //!
 //! **Bishop simplified**, moment equilibrium with horizontal interslice forces:
-//! `FS = sum[(c b + W tan(phi)) / m_alpha] / sum(W sin(alpha))`,
+//! `FS = sum[(c b + (W - u b) tan(phi)) / m_alpha] / (sum(W sin(alpha)) + H (zc - z_H) / r)`,
 //! `m_alpha = cos(alpha) + sin(alpha) tan(phi) / FS`, with `b = l cos(alpha)`;
 //! Halley's method (Newton with the second derivative) on
 //! `FS sum(W sin(alpha)) - sum[...] = 0` from the ordinary
@@ -34,10 +47,12 @@
 //!
 //! **Spencer (1967)**, force and moment equilibrium with parallel interslice
 //! resultants `Q` inclined at a constant `theta`:
-//! `Q = (R / FS - D) / m`, `R = c l + W cos(alpha) tan(phi)`,
-//! `D = W sin(alpha)`, `m = cos(alpha - theta) + sin(alpha - theta) tan(phi) / FS`;
+//! `Q = (R / FS - D) / m`, `R = c l + (W cos(alpha) - H sin(alpha) - u l) tan(phi)`,
+//! `D = W sin(alpha) + H cos(alpha)` (`H` on the crest-side slice only),
+//! `m = cos(alpha - theta) + sin(alpha - theta) tan(phi) / FS`;
 //! force equilibrium `sum Q = 0`, moment equilibrium about the centre
-//! `sum Q cos(alpha - theta) = 0`. Solved for `(FS, theta)` by a damped 2D
+//! `r sum Q cos(alpha - theta) = H ((zc - z_H) - r cos(alpha_n))` (`H` acts at
+//! `z_H`, not at the base of its slice). Solved for `(FS, theta)` by a damped 2D
 //! Newton iteration from `(FS_Bishop, 0)` (at `theta = 0` the moment equation
 //! is Bishop's), with a bracketing fallback on `theta` if Newton fails.
 //!
@@ -57,6 +72,7 @@ mod input;
 mod methods;
 mod search;
 mod section;
+mod water;
 
 use std::time::Instant;
 
@@ -68,6 +84,7 @@ pub use geometry::{slices_of, Reject, SliceInfo};
 pub use input::{EntryExitSpec, GridSpec, LemInput, Mode, SceneLem, SearchSpec};
 pub use methods::{evaluate_circle, CircleFs};
 pub use section::{cut_mesh, Facing, LemSection, LowerBound, Material, SectionCut, Zone};
+pub use water::{Pore, TensionCrack, Water, WaterModel};
 
 /// Default number of slices. On a circle near the ACADS 1(a) critical one,
 /// every method's FS at 50 slices is within 1e-4 of its value at 400, and the
@@ -165,6 +182,8 @@ pub struct LemResult {
     /// Trial circles rejected as inadmissible.
     pub circles_rejected: usize,
     pub slices: usize,
+    /// The water model that ran (`pore`: "dry", "surface" or "ru"; the crack).
+    pub water: WaterModel,
     pub wall_s: f64,
 }
 
@@ -189,6 +208,7 @@ fn single_circle(input: &LemInput, circle: Circle) -> Result<LemResult, crate::E
         circles_evaluated: 1,
         circles_rejected: 0,
         slices: input.slices,
+        water: input.section.water().model(),
         wall_s: 0.0,
     };
     for m in input.methods.iter().copied() {
@@ -231,6 +251,7 @@ pub fn table(result: &LemResult) -> String {
             );
         }
     }
+    s += &format!("water: {}\n", result.water.describe());
     s += &format!(
         "{} circles evaluated, {} rejected, {} slices, {:.3} s\n",
         result.circles_evaluated, result.circles_rejected, result.slices, result.wall_s

@@ -463,6 +463,7 @@ pub(crate) fn run(input: &LemInput, spec: &SearchSpec) -> Result<LemResult, crat
         circles_evaluated: evaluated,
         circles_rejected: rejected,
         slices: n,
+        water: input.section.water().model(),
         wall_s: 0.0,
     };
     for m in input.methods.iter().copied() {

@@ -16,6 +16,8 @@ use serde::Serialize;
 use crate::error::SceneError;
 use crate::mesh::Mesh;
 
+use super::water::Water;
+
 /// Soil or rock strength and weight (Mohr-Coulomb, dry).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Material {
@@ -75,6 +77,7 @@ pub struct LemSection {
     background: Option<Material>,
     zones: Vec<Zone>,
     facing: Facing,
+    water: Water,
     pub(crate) frame: Frame,
 }
 
@@ -86,6 +89,8 @@ pub(crate) struct Frame {
     pub background: Option<Strength>,
     pub zones: Vec<(Vec<[f64; 2]>, Strength)>,
     pub mirrored: bool,
+    /// The section's water, mirrored with it.
+    pub water: Water,
     /// Heuristic toe and crest (internal frame), for default search ranges.
     pub toe: [f64; 2],
     pub crest: [f64; 2],
@@ -251,7 +256,20 @@ impl LemSection {
             }
         };
         let frame = build_frame(&ground, &lower_bound, background, &zones, facing);
-        Ok(LemSection { ground, lower_bound, background, zones, facing, frame })
+        Ok(LemSection { ground, lower_bound, background, zones, facing, water: Water::default(), frame })
+    }
+
+    /// The section with pore water and a tension crack (checked against the
+    /// ground; errors name the `[water]` key).
+    pub fn with_water(mut self, water: Water) -> Result<Self, SceneError> {
+        water.check(&self.ground)?;
+        self.frame.water = if self.frame.mirrored { water.mirrored() } else { water.clone() };
+        self.water = water;
+        Ok(self)
+    }
+
+    pub fn water(&self) -> &Water {
+        &self.water
     }
 
     /// The slope section of a 3D mesh: the nodes of the surface group
@@ -350,7 +368,16 @@ fn build_frame(
         .map(|z| (if mirrored { mirror(&z.polygon, false) } else { z.polygon.clone() }, Strength::from(z.material)))
         .collect();
     let (toe, crest) = toe_and_crest(&g);
-    Frame { ground: g, lower, background: background.map(Strength::from), zones, mirrored, toe, crest }
+    Frame {
+        ground: g,
+        lower,
+        background: background.map(Strength::from),
+        zones,
+        mirrored,
+        water: Water::default(),
+        toe,
+        crest,
+    }
 }
 
 /// Toe: the last vertex within 1 % of H of the lowest ground level before

@@ -161,6 +161,8 @@ pub struct LemParts {
     pub mode: Mode,
     /// The file's `material[i]` is `slots[i]`.
     pub slots: Vec<Slot>,
+    /// The file's `[water]`, carried unchanged into every member.
+    pub water: crate::lem::Water,
 }
 
 impl LemParts {
@@ -189,6 +191,7 @@ impl LemParts {
             methods: input.methods.clone(),
             mode: input.mode.clone(),
             slots,
+            water: s.water().clone(),
         }
     }
 
@@ -261,6 +264,7 @@ impl LemParts {
             self.zones.clone(),
             Some(self.facing),
         )
+        .and_then(|s| s.with_water(self.water.clone()))
         .map_err(file_key)?;
         match &self.mode {
             Mode::Circle(c) => {

@@ -67,6 +67,9 @@ pub const DECLARED: &[(&str, &[&str])] = &[
     ("perf/phase2/", &["verification/cases/slope-slip/slope-slip.toml"]),
     ("perf/srm/", &["verification/cases/slope-slip/slope-slip.toml"]),
     ("perf/ensemble/", &["verification/ensemble/paper-slope-slip.toml", "verification/ensemble/paper-slope-slip-srm.toml"]),
+    ("lem/water-fk-ru/", &["verification/lem/fredlund-krahn-1977-ru.toml"]),
+    ("lem/water-arai-tagyo/", &["verification/lem/arai-tagyo-1985-water.toml"]),
+    ("lem/water-acads-1b/", &["verification/lem/acads-1b.toml"]),
 ];
 
 /// The declared files of row `id` with reference `source` (its

@@ -9,6 +9,7 @@ pub mod block;
 pub mod ensemble;
 pub mod extreme;
 pub mod joints;
+pub mod lem_water;
 pub mod meshes;
 pub mod plastic;
 pub mod skfem;
