@@ -117,6 +117,7 @@ pub fn scene_number<'a>(s: &'a mut Scene, key: &str) -> Result<&'a mut f64, Unkn
         [("failure", None), ("sliding_displacement", None)] => {
             s.failure.as_mut().and_then(|f| f.sliding_displacement.as_mut())
         }
+        [("failure", None), ("sliding_travel", None)] => s.failure.as_mut().and_then(|f| f.sliding_travel.as_mut()),
         [("water", None), (f, None)] => s.water.as_mut().and_then(|w| match *f {
             "rise" => Some(&mut w.rise),
             "unit_weight" => Some(&mut w.unit_weight),
@@ -231,6 +232,17 @@ impl LemParts {
                 "min_width" => s.min_width.as_mut(),
                 _ => None,
             },
+            ([("water", None), (f, None)], _) => {
+                let w = &mut self.water;
+                match (*f, &mut w.pore) {
+                    ("ru", crate::lem::Pore::Ru(r)) => Some(r),
+                    ("crack_depth", _) => w.crack.as_mut().map(|c| &mut c.depth),
+                    ("crack_fill", _) => w.crack.as_mut().map(|c| &mut c.fill),
+                    // gamma_w of the file (the surface's is set from it when a member is built).
+                    ("unit_weight", _) => Some(&mut w.unit_weight),
+                    _ => None,
+                }
+            }
             ([("search", None), ("grid", None), (f, Some(i))], Mode::Search(s)) => {
                 s.grid.as_mut().and_then(|g| match *f {
                     "x" => pair(&mut g.x, *i),
@@ -264,7 +276,13 @@ impl LemParts {
             self.zones.clone(),
             Some(self.facing),
         )
-        .and_then(|s| s.with_water(self.water.clone()))
+        .and_then(|s| {
+            let mut water = self.water.clone();
+            if let crate::lem::Pore::Surface(p) = &mut water.pore {
+                p.unit_weight = water.unit_weight;
+            }
+            s.with_water(water)
+        })
         .map_err(file_key)?;
         match &self.mode {
             Mode::Circle(c) => {
