@@ -92,3 +92,20 @@ pub fn polygon_normal_area(p: &[[f64; 3]]) -> ([f64; 3], f64) {
         ([0.0; 3], 0.0)
     }
 }
+
+/// Each corner's share of a face: `(corner, area, unit normal)`, the normal
+/// along the face's node order (outward for the cell it was taken from).
+pub fn corner_shares(p: &[[f64; 3]]) -> Vec<(usize, f64, [f64; 3])> {
+    let m = p.len() as f64;
+    let f = [0, 1, 2].map(|d| p.iter().map(|x| x[d]).sum::<f64>() / m);
+    (0..p.len())
+        .filter_map(|k| {
+            let (prev, a, next) = (p[(k + p.len() - 1) % p.len()], p[k], p[(k + 1) % p.len()]);
+            let t1 = super::shape::cross(super::shape::sub(next, a), super::shape::sub(f, a));
+            let t2 = super::shape::cross(super::shape::sub(a, prev), super::shape::sub(f, prev));
+            let nsum = [t1[0] + t2[0], t1[1] + t2[1], t1[2] + t2[2]];
+            let nlen = super::shape::norm(nsum);
+            (nlen > 0.0).then(|| (k, 0.25 * (super::shape::norm(t1) + super::shape::norm(t2)), nsum.map(|v| v / nlen)))
+        })
+        .collect()
+}

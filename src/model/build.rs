@@ -35,12 +35,17 @@ pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
         let k = mesh.cells[c].corners().iter().position(|&n| n == mesh_node).expect("face node is a cell corner");
         slot_offset[c] + k
     };
+    // A cell joined to a neighbour through a merged face is inside a larger
+    // impermeable block (no pore pressure in it, stage 8).
+    let mut in_block = vec![false; mesh.cells.len()];
     for s in &adj.shared {
         let nodes = face_nodes(mesh, s.cells[0], s.faces[0]);
         if interfaces[interface_of(&face_key(&nodes))].mode == JointMode::Merged {
             for &n in &nodes {
                 uf.union(slot(s.cells[0], n), slot(s.cells[1], n));
             }
+            in_block[s.cells[0]] = true;
+            in_block[s.cells[1]] = true;
         }
     }
     let mut node_of_slot = vec![u32::MAX; uf.len()];
@@ -107,24 +112,14 @@ pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
     let water = match spec.water {
         None => None,
         Some(w) => {
-            let centroids: Vec<[f64; 3]> = (0..el.len())
+            // The centroid of each element with a pore pressure (none inside a block).
+            let centroids: Vec<Option<[f64; 3]>> = (0..el.len())
                 .map(|e| {
                     let c = el.corners(e);
-                    [0, 1, 2].map(|d| c.iter().map(|&n| x0[n as usize][d]).sum::<f64>() / c.len() as f64)
+                    (!in_block[e])
+                        .then(|| [0, 1, 2].map(|d| c.iter().map(|&n| x0[n as usize][d]).sum::<f64>() / c.len() as f64))
                 })
                 .collect();
-            // A cell joined to a neighbour through a merged face is inside a larger
-            // impermeable block: no pore pressure in it.
-            let mut in_block = vec![false; mesh.cells.len()];
-            for s in &adj.shared {
-                let nodes = face_nodes(mesh, s.cells[0], s.faces[0]);
-                if interfaces[interface_of(&face_key(&nodes))].mode == JointMode::Merged {
-                    in_block[s.cells[0]] = true;
-                    in_block[s.cells[1]] = true;
-                }
-            }
-            let centroids: Vec<Option<[f64; 3]>> =
-                centroids.into_iter().zip(&in_block).map(|(c, &b)| (!b).then_some(c)).collect();
             let node_of = |c: usize, n: usize| node_of_slot[slot(c, n)];
             let (f_w, model) =
                 super::water::water_forces(w, mesh, &adj, &coords, &x0, &springs, &interfaces, node_of, &centroids)?;
@@ -335,7 +330,7 @@ fn make_springs(
             continue;
         }
         let p: Vec<[f64; 3]> = nodes.iter().map(|&n| coords[n]).collect();
-        for (k, area, normal) in super::water::corner_shares(&p) {
+        for (k, area, normal) in crate::mesh::adjacency::corner_shares(&p) {
             let (a_id, b_id) = (node_of(s.cells[0], nodes[k]), node_of(s.cells[1], nodes[k]));
             if a_id == b_id {
                 continue; // already joined through a merged interface

@@ -128,6 +128,19 @@ fn csr(lists: &[Vec<u32>]) -> (Vec<u32>, Vec<u32>) {
     (ptr, idx)
 }
 
+/// The box of `points`: `(lo, hi)` per axis (m); infinite bounds (`lo > hi`)
+/// for no point. [`Model::bounds_of`], and the build before there is a model.
+pub fn point_bounds(points: impl IntoIterator<Item = [f64; 3]>) -> ([f64; 3], [f64; 3]) {
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for p in points {
+        for d in 0..3 {
+            lo[d] = lo[d].min(p[d]);
+            hi[d] = hi[d].max(p[d]);
+        }
+    }
+    (lo, hi)
+}
+
 /// Everything that does not change during a run.
 #[derive(Debug, Clone)]
 pub struct Model {
@@ -175,14 +188,7 @@ impl Model {
     /// The box of the node copies `nodes` at rest: `(lo, hi)` per axis (m);
     /// infinite bounds (`lo > hi`) for no node.
     pub fn bounds_of(&self, nodes: impl IntoIterator<Item = usize>) -> ([f64; 3], [f64; 3]) {
-        let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-        for i in nodes {
-            for d in 0..3 {
-                lo[d] = lo[d].min(self.x0[i][d]);
-                hi[d] = hi[d].max(self.x0[i][d]);
-            }
-        }
-        (lo, hi)
+        point_bounds(nodes.into_iter().map(|i| self.x0[i]))
     }
 
     /// The box of every node at rest ([`Self::bounds_of`]).

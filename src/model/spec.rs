@@ -246,15 +246,16 @@ impl WaterSection {
         if !self.rise.is_finite() {
             return Err(SceneError::invalid("water.rise", "must be finite"));
         }
-        if !(self.unit_weight.is_finite() && self.unit_weight > 0.0) {
-            return Err(SceneError::invalid(
-                "water.unit_weight",
-                format!("must be a finite positive number, got {}", self.unit_weight),
-            ));
-        }
         if self.surface.is_empty() {
             if self.crack.is_empty() {
                 return Err(SceneError::invalid("water", "gives neither a surface nor a [[water.crack]]"));
+            }
+            // The cracks' gamma_w (Phreatic::new checks a surface's).
+            if !(self.unit_weight.is_finite() && self.unit_weight > 0.0) {
+                return Err(SceneError::invalid(
+                    "water.unit_weight",
+                    format!("must be a finite positive number, got {}", self.unit_weight),
+                ));
             }
             return Ok(None);
         }

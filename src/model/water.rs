@@ -17,8 +17,7 @@ use serde::Serialize;
 use super::spec::WaterSection;
 use super::Interface;
 use crate::error::{Error, SceneError};
-use crate::mesh::adjacency::{face_nodes, FaceAdjacency};
-use crate::mesh::shape::{cross, norm, sub};
+use crate::mesh::adjacency::{corner_shares, face_nodes, FaceAdjacency};
 use crate::mesh::Mesh;
 use crate::physics::spring::Springs;
 use crate::physics::water::{crack_pressure, Phreatic};
@@ -70,23 +69,6 @@ impl WaterModel {
 pub const JOINT_WATER: &str =
     "joint water (UDEC): impermeable blocks, pore pressure on every spring interface and outer face below the surface";
 
-/// Each corner's share of a face: `(corner, area, unit normal)`, the normal
-/// along the face's node order (outward for the cell it was taken from).
-pub(super) fn corner_shares(p: &[[f64; 3]]) -> Vec<(usize, f64, [f64; 3])> {
-    let m = p.len() as f64;
-    let f = [0, 1, 2].map(|d| p.iter().map(|x| x[d]).sum::<f64>() / m);
-    (0..p.len())
-        .filter_map(|k| {
-            let (prev, a, next) = (p[(k + p.len() - 1) % p.len()], p[k], p[(k + 1) % p.len()]);
-            let t1 = cross(sub(next, a), sub(f, a));
-            let t2 = cross(sub(a, prev), sub(f, prev));
-            let nsum = [t1[0] + t2[0], t1[1] + t2[1], t1[2] + t2[2]];
-            let nlen = norm(nsum);
-            (nlen > 0.0).then(|| (k, 0.25 * (norm(t1) + norm(t2)), nsum.map(|v| v / nlen)))
-        })
-        .collect()
-}
-
 /// The water's forces (`3 i + d`, N) and what the model keeps of it.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn water_forces(
@@ -101,7 +83,7 @@ pub(super) fn water_forces(
     element_centroids: &[Option<[f64; 3]>],
 ) -> Result<(Vec<f64>, WaterModel), Error> {
     let surface = water.phreatic()?;
-    let (lo, hi) = bounds(x0);
+    let (lo, hi) = super::point_bounds(x0.iter().copied());
     if let Some(s) = &surface {
         let [a, b] = s.x_range();
         let tol = 1e-9 * (hi[0] - lo[0]).abs().max(1.0);
@@ -198,15 +180,4 @@ pub(super) fn water_forces(
         resultant,
     };
     Ok((f, model))
-}
-
-fn bounds(x: &[[f64; 3]]) -> ([f64; 3], [f64; 3]) {
-    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-    for p in x {
-        for d in 0..3 {
-            lo[d] = lo[d].min(p[d]);
-            hi[d] = hi[d].max(p[d]);
-        }
-    }
-    (lo, hi)
 }

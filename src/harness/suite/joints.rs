@@ -52,15 +52,21 @@ fn tolerance(id: &str) -> f64 {
 /// midpoint is within the row's tolerance ([`TOL_JOINTS_SRM`],
 /// [`TOL_JOINTS_TOPPLING`]) of the closed form.
 pub fn run(case: Case, closed_form: f64, id: &str) -> Result<JointRun, Error> {
+    let (row, result, model) = reduce(case, closed_form, id, tolerance(id))?;
+    Ok(JointRun { case, result, closed_form, cells: model.elements.len(), row, model })
+}
+
+/// `cdem srm` on `case` and its row `id` against `closed_form`, failed (with
+/// the reason) by [`defect`] at tolerance `tol`.
+pub fn reduce(case: Case, closed_form: f64, id: &str, tol: f64) -> Result<(Check, SrmResult, Model), Error> {
     let t0 = std::time::Instant::now();
-    let scene = case.scene()?;
-    let (result, model) = run_srm(&scene, &mut |_| {})?;
+    let (result, model) = run_srm(&case.scene()?, &mut |_| {})?;
     let fs = result.fs.unwrap_or(f64::NAN);
     let mut row = reg::row(id).value(fs, closed_form, t0.elapsed().as_secs_f64());
-    if let Some(d) = defect(&result, closed_form, tolerance(id)) {
+    if let Some(d) = defect(&result, closed_form, tol) {
         row = row.with_defect(d);
     }
-    Ok(JointRun { case, result, closed_form, cells: model.elements.len(), row, model })
+    Ok((row, result, model))
 }
 
 /// What is wrong with a reduction, if anything.

@@ -4,11 +4,11 @@
 //! a parallel water table and of Hoek & Bray's plane failure with a
 //! water-filled tension crack.
 
-use crate::drivers::{run_scene, run_srm, RunResult};
+use crate::drivers::{run_scene, RunResult};
 use crate::error::Error;
 use crate::harness::registry::{self as reg, Case, CONFINED_COLUMN, INFINITE_SLOPE_SET, PLANE_FAILURE_SET};
 use crate::harness::report::Check;
-use crate::harness::suite::joints::defect;
+use crate::harness::suite::joints::reduce;
 use crate::physics::spring::{relative_displacement, spring_force};
 
 /// The submerged column's rows: the springs' effective stress at mid-height,
@@ -71,14 +71,7 @@ pub fn srm_cases() -> [(Case, f64, &'static str); 5] {
 /// One reduction's row: failed unless the bracket is narrow, its upper end
 /// slid, and its midpoint is within [`reg::TOL_WATER_SRM`] of the closed form.
 pub fn srm_row(case: Case, closed_form: f64, id: &str) -> Result<(Check, crate::drivers::SrmResult), Error> {
-    let t0 = std::time::Instant::now();
-    let (result, _) = run_srm(&case.scene()?, &mut |_| {})?;
-    let fs = result.fs.unwrap_or(f64::NAN);
-    let mut row = reg::row(id).value(fs, closed_form, t0.elapsed().as_secs_f64());
-    if let Some(d) = defect(&result, closed_form, reg::TOL_WATER_SRM) {
-        row = row.with_defect(d);
-    }
-    Ok((row, result))
+    reduce(case, closed_form, id, reg::TOL_WATER_SRM).map(|(row, result, _)| (row, result))
 }
 
 /// Every row of this suite.
