@@ -54,3 +54,21 @@ fn srm_needs_a_breakable_interface() {
     let Err(err) = run_srm(&scene, &mut |_| {}) else { panic!("no breakable interface, yet a result") };
     assert!(err.is_input() && err.to_string().contains("breakable interface"), "{err}");
 }
+
+/// Which model answers: real joints between merged blocks (plane failure,
+/// `[joints]` merged) carry no interlocking note; the mesh's own faces all
+/// breakable between elastic blocks do; plastic blocks do not.
+#[test]
+fn the_interlocking_note_is_for_breakable_mesh_faces_only() {
+    use cdem::drivers::srm::Answer;
+    let answer = |path: &str| {
+        let scene = cdem::scene::Scene::load(std::path::Path::new(path)).unwrap();
+        Answer::of(&cdem::drivers::build_model(&scene).unwrap())
+    };
+    let plane = answer(reg::PLANE_FAILURE.input);
+    assert_eq!((plane.kind, plane.note.is_some()), ("interfaces only", false));
+    let joints = answer("verification/plastic/cheng-61/c61-hex-joints.toml");
+    assert_eq!((joints.kind, joints.note.is_some()), ("every interface, elastic blocks", true));
+    let plastic = answer("verification/plastic/cheng-61/c61-hex.toml");
+    assert_eq!((plastic.kind, plastic.note.is_some()), ("plastic blocks", false));
+}

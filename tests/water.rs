@@ -45,7 +45,7 @@ fn the_submerged_column_carries_effective_stress_in_its_springs() {
 fn strength_reduction_with_water_matches_the_closed_forms() {
     let mut rows = Vec::new();
     for (case, fs, id) in water::srm_cases() {
-        let (row, r) = water::srm_row(case, fs, id).unwrap();
+        let (row, r, _) = water::srm_row(case, fs, id).unwrap();
         println!("{id}: FS {:.4} {:?} vs {fs:.4} ({} trials)", r.fs.unwrap_or(f64::NAN), r.bracket, r.trials.len());
         rows.push(row);
     }
@@ -175,4 +175,39 @@ fn wulong_slides_after_rain() {
     assert!(rows.iter().all(|c| c.passed()), "{rows:?}");
     let (lo, hi) = (lo.unwrap(), hi.unwrap());
     assert!(hi - lo <= cdem::harness::suite::wulong::WET_LEVEL_RESOLUTION + 1e-12);
+}
+
+/// The LEM of the wet Wulong scene: at rise 0 the table (20 m below the
+/// ground) misses the critical circle, so the FS is the dry scene's; then it
+/// falls as the table rises (a minimum over circles of factors that each fall
+/// with the pore pressure; the search's own scatter is far below the steps).
+#[test]
+fn wulong_lem_fs_falls_as_the_table_rises() {
+    use cdem::harness::suite::wulong::{figure_rises, lem_fs_by_rise};
+    use cdem::lem::Method;
+    let wet = reg::WULONG_WET.scene().unwrap();
+    let fs = lem_fs_by_rise(&wet, &figure_rises()).unwrap();
+    let dry = cdem::lem::analyse(&cdem::drivers::scene_lem_input(&reg::WULONG.scene().unwrap()).unwrap()).unwrap();
+    let dry = *dry.fs.get(Method::Bishop).unwrap();
+    for (rise, bishop, spencer) in &fs {
+        println!("rise {rise:4.1} m: Bishop {bishop:.4}, Spencer {spencer:.4}");
+    }
+    assert!((fs[0].1 - dry).abs() < 1e-9, "rise 0: {} vs dry {dry}", fs[0].1);
+    for w in fs.windows(2) {
+        assert!(w[1].1 <= w[0].1 + 1e-3 && w[1].2 <= w[0].2 + 1e-3, "{w:?}");
+    }
+    // The table at rise 0 is the ground WET_TABLE_DEPTH down (the file's
+    // comment; the rows' depths below the ground are computed from it).
+    let ground = cdem::drivers::scene_lem_input(&wet).unwrap().section;
+    for p in &wet.water.as_ref().unwrap().surface {
+        let depth = ground.ground_z(p[0].clamp(0.0, 141.0)) - p[1];
+        assert!((depth - cdem::harness::suite::wulong::WET_TABLE_DEPTH).abs() < 1e-3, "{p:?}: {depth}");
+    }
+    let last = fs.last().unwrap();
+    assert!(last.1 < 0.5 * dry, "a table 1 m below the ground at least halves the FS: {last:?} vs {dry}");
+    let dir = std::env::temp_dir().join("cdem-wulong-fs-by-water");
+    std::fs::create_dir_all(&dir).unwrap();
+    let verdicts =
+        [(0.0, false), (9.5, false), (14.25, false), (16.62, false), (17.81, false), (18.41, false), (19.0, true)];
+    cdem::output::figures::water::fs_by_rise(&dir.join("fs.png"), &fs, &verdicts).unwrap();
 }

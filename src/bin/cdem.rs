@@ -87,9 +87,10 @@ enum Command {
         out: PathBuf,
     },
     /// Performance: step bandwidth against stream, DR against FEM, LEM against pySlope, phase 2
-    /// and `cdem srm` on the slip-surface slope, ensembles of it, the damping table and cost
-    /// against size (gmsh for refine 7, 10): DIR/perf.md (with the validation rows perf/*) and CSVs.
-    /// Run from the repository root; about 20 to 40 minutes with the defaults.
+    /// and `cdem srm` on the slip-surface slope, ensembles of it, the damping table, cost
+    /// against size (gmsh for refine 7, 10) and phase 2 and `cdem srm` against size (gmsh):
+    /// DIR/perf.md (with the validation rows perf/*) and CSVs. Run from the repository root;
+    /// about 35 to 55 minutes with the defaults.
     Perf {
         #[arg(long, default_value = "perf")]
         out: PathBuf,
@@ -116,6 +117,10 @@ enum Command {
         /// in the same run. Without it the LEM ratio uses pySlope's recorded time (references/pyslope.json).
         #[arg(long, value_name = "PYTHON")]
         pyslope: Option<PathBuf>,
+        /// Skip phase 2 and `cdem srm` against size (the slip-surface slab at 4 resolutions, 250 to
+        /// 16,000 hexahedra, and the 3D wedge at 4 mesh sizes; about 15 minutes, gmsh on PATH).
+        #[arg(long)]
+        no_trial_scaling: bool,
     },
     /// Run every paper case and write DIR/report.md with the validation table and figures.
     Reproduce {
@@ -299,13 +304,14 @@ fn main() -> ExitCode {
             st.finish();
             reached(r.map(|rows| eprintln!("study: {} points -> {}", rows.len(), out.join("study.csv").display())))
         }
-        Command::Perf { out, refine, dr_up_to, no_damping, no_srm, no_ensemble, pyslope } => {
+        Command::Perf { out, refine, dr_up_to, no_damping, no_srm, no_ensemble, pyslope, no_trial_scaling } => {
             let mut opts = cdem::harness::perf::PerfOptions {
                 damping: !no_damping,
                 srm: !no_srm,
                 ensemble: (!no_ensemble).then(|| std::env::current_exe().expect("the path of this executable")),
                 refine,
                 pyslope,
+                trials: !no_trial_scaling,
                 ..Default::default()
             };
             opts.dr_up_to = dr_up_to.unwrap_or(opts.dr_up_to);

@@ -163,7 +163,12 @@ pub const INTERLOCKING_NOTE: &str = "every element interface is breakable while 
 impl Answer {
     /// The answer of `model`'s strength reduction.
     pub fn of(model: &Model) -> Self {
-        let every = !model.springs.is_empty() && model.joint_state().strength.iter().all(Option::is_some);
+        // The bias is that of the mesh's own faces: the default joints
+        // (interface 0, `[joints]`) carry springs, and every spring can
+        // break. Springs only on named interface groups (`[joints]` merged)
+        // are real joints between real blocks: no bias.
+        let on_mesh_faces = model.springs.interface.contains(&0);
+        let every = on_mesh_faces && model.joint_state().strength.iter().all(Option::is_some);
         match (model.has_plastic_blocks(), every) {
             (true, _) => Answer { kind: "plastic blocks", note: None },
             (false, true) => Answer { kind: "every interface, elastic blocks", note: Some(INTERLOCKING_NOTE.into()) },

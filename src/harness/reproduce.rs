@@ -177,9 +177,31 @@ fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Err
 fn water(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
     progress("water: submerged column, infinite slope, plane failure with a water-filled crack");
     let _ = writeln!(rep.md, "## Pore water: effective stress and the closed forms (references/water.md)\n");
-    rep.checks.extend(suite::water::rows()?);
+    std::fs::create_dir_all(rep.path("water")).map_err(|e| Error::io(rep.path("water"), e))?;
+    let (rows, runs) = suite::water::rows()?;
+    rep.checks.extend(rows);
+    for (id, result, model) in &runs {
+        let name = id.trim_start_matches("water/").trim_end_matches("-srm");
+        let file = format!("water/{name}-mechanism.png");
+        if crate::output::figures::joints::mechanism_views(result, model, &rep.path(&file))? {
+            rep.figure(&format!("{id}: the mechanism at the smallest unstable factor, the water in blue"), &file);
+        }
+    }
     progress("water: Wulong after rain, the water table's rise at which it first slides (about 2 min)");
-    rep.checks.extend(suite::wulong::wet_rows()?.0);
+    let (rows, level) = suite::wulong::wet_rows()?;
+    rep.checks.extend(rows);
+    let scene = reg::WULONG_WET.scene()?;
+    let lem = suite::wulong::lem_fs_by_rise(&scene, &suite::wulong::figure_rises())?;
+    let file = "water/wulong-fs-by-water.png";
+    let verdicts: Vec<(f64, bool)> = level.2.iter().map(|t| (t.0, t.1)).collect();
+    crate::output::figures::water::fs_by_rise(&rep.path(file), &lem, &verdicts)?;
+    rep.figure("Wulong after rain: the LEM's FS against the water table's rise, and where CDEM first slides", file);
+    let table: Vec<String> = lem.iter().map(|(r, b, s)| format!("| {r:.0} | {b:.3} | {s:.3} |")).collect();
+    let _ = writeln!(
+        rep.md,
+        "Wulong after rain, the LEM of `wulong-wet.toml` against the rise (m):\n\n| rise | Bishop | Spencer |\n|---|---|---|\n{}\n",
+        table.join("\n")
+    );
     Ok(())
 }
 

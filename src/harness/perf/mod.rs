@@ -23,6 +23,8 @@
 //!   speed-up of two shard processes;
 //! - [`damping`]: damping kind x mass scaling x block masses on one scene;
 //! - [`scaling`]: cost against size, fitted exponents;
+//! - [`trials`]: phase 2 and strength reduction against size (a slab and a
+//!   3D wedge), fitted exponents;
 //! - [`tables`]: the Markdown tables, the CSV files and the figure.
 //!
 //! The items are also re-exported here (`perf::step_bytes`, ...).
@@ -46,6 +48,7 @@ pub mod scaling;
 pub mod stream;
 pub mod tables;
 pub mod timing;
+pub mod trials;
 
 pub use bytes::step_bytes;
 pub use damping::{damping_table, DampingRow};
@@ -89,6 +92,9 @@ pub struct PerfOptions {
     /// pySlope is then timed in the same run; without it the ratio uses
     /// its recorded time.
     pub pyslope: Option<std::path::PathBuf>,
+    /// Phase 2 and strength reduction against size ([`trials`]; about
+    /// 15 minutes, gmsh on PATH).
+    pub trials: bool,
 }
 
 impl Default for PerfOptions {
@@ -101,6 +107,7 @@ impl Default for PerfOptions {
             lumped_up_to: 4000,
             dr_up_to: usize::MAX,
             pyslope: None,
+            trials: true,
         }
     }
 }
@@ -110,8 +117,9 @@ impl Default for PerfOptions {
 const DAMPING_MAX_STEPS: usize = 400_000;
 
 /// `cdem perf`: headline figures, phase 2 and strength reduction on the
-/// slip-surface slope, timed ensembles of it, damping table and scaling
-/// study; writes `perf.md` (with the validation rows `perf/*` of the run),
+/// slip-surface slope, timed ensembles of it, damping table, scaling study
+/// and phase 2 and strength reduction against size ([`trials`], `trials.csv`,
+/// appended to `perf.md`); writes `perf.md` (with the validation rows `perf/*` of the run),
 /// `phase2.csv`, `srm.csv`, `ensemble.csv`, `damping.csv`, `scaling.csv` and
 /// `scaling.png` to `out` (gmsh meshes in `out/meshes`, the ensemble
 /// processes' output in `out/ensemble`) and returns `perf.md`.
@@ -128,5 +136,19 @@ pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn 
         if opts.damping { damping_table(&model, &scene.solver, DAMPING_MAX_STEPS, progress) } else { Vec::new() };
     let meshes = scaling_meshes(root, &opts.refine, &out.join("meshes"), progress)?;
     let scaling = scaling_study(&scene, &meshes, opts.lumped_up_to, opts.dr_up_to, progress)?;
-    write_report(out, &head, &failure, ensemble.as_ref(), &damping, &scaling)
+    let trials = match opts.trials {
+        true => {
+            let (slab, wedge) = (trials::SLAB_REFINE, trials::WEDGE_SIZES);
+            trials::trial_scaling(root, &out.join("meshes"), &slab, &wedge, progress)?
+        }
+        false => Vec::new(),
+    };
+    let mut md = write_report(out, &head, &failure, ensemble.as_ref(), &damping, &scaling)?;
+    if !trials.is_empty() {
+        tables::write_csv(&out.join("trials.csv"), &trials)?;
+        md.push_str("\n## Phase 2 and strength reduction against size (trials.csv)\n\n");
+        md.push_str(&trials::trial_markdown(&trials));
+        crate::output::write_atomic(&out.join("perf.md"), md.as_bytes())?;
+    }
+    Ok(md)
 }

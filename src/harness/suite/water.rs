@@ -70,15 +70,26 @@ pub fn srm_cases() -> [(Case, f64, &'static str); 5] {
 
 /// One reduction's row: failed unless the bracket is narrow, its upper end
 /// slid, and its midpoint is within [`reg::TOL_WATER_SRM`] of the closed form.
-pub fn srm_row(case: Case, closed_form: f64, id: &str) -> Result<(Check, crate::drivers::SrmResult), Error> {
-    reduce(case, closed_form, id, reg::TOL_WATER_SRM).map(|(row, result, _)| (row, result))
+pub fn srm_row(
+    case: Case,
+    closed_form: f64,
+    id: &str,
+) -> Result<(Check, crate::drivers::SrmResult, crate::model::Model), Error> {
+    reduce(case, closed_form, id, reg::TOL_WATER_SRM)
 }
 
-/// Every row of this suite.
-pub fn rows() -> Result<Vec<Check>, Error> {
+/// A reduction of this suite: its row id, result and model.
+pub type SrmRun = (&'static str, crate::drivers::SrmResult, crate::model::Model);
+
+/// Every row of this suite, and each reduction's result and model (for
+/// the mechanism figures of `cdem reproduce`).
+pub fn rows() -> Result<(Vec<Check>, Vec<SrmRun>), Error> {
     let mut rows = column_rows()?.0;
+    let mut runs = Vec::new();
     for (case, fs, id) in srm_cases() {
-        rows.push(srm_row(case, fs, id)?.0);
+        let (row, result, model) = srm_row(case, fs, id)?;
+        rows.push(row);
+        runs.push((id, result, model));
     }
-    Ok(rows)
+    Ok((rows, runs))
 }

@@ -421,6 +421,10 @@ pub fn slides_at(scene: &Scene, rise: f64) -> Result<(bool, f64), Error> {
 /// the bottom does.
 pub type WetLevel = (Option<f64>, Option<f64>, Vec<(f64, bool, f64)>);
 
+/// The depth of wulong-wet.toml's water table below the ground at rise 0 (m):
+/// its surface is the ground's vertices 20 m down.
+pub const WET_TABLE_DEPTH: f64 = 20.0;
+
 /// Resolution of the bisection on the water table's rise (m).
 pub const WET_LEVEL_RESOLUTION: f64 = 1.0;
 
@@ -478,8 +482,8 @@ pub fn wet_rows() -> Result<(Vec<Check>, WetLevel), Error> {
     let ours = match (lo, hi) {
         (Some(l), Some(h)) => format!(
             "stands at rise {l:.2} m, slides at {h:.2} m: the table {:.2}-{:.2} m below the ground",
-            20.0 - h,
-            20.0 - l
+            WET_TABLE_DEPTH - h,
+            WET_TABLE_DEPTH - l
         ),
         _ => format!("no bracket: stands at {lo:?}, slides at {hi:?}"),
     };
@@ -490,4 +494,31 @@ pub fn wet_rows() -> Result<(Vec<Check>, WetLevel), Error> {
         seconds,
     );
     Ok((vec![slides, level_row], level))
+}
+
+/// The LEM's factor of safety of the wet Wulong scene against the water
+/// table's rise: `(rise, Bishop, Spencer)` at each rise of `rises` (m),
+/// from the scene's `[lem]` (the joints' strengths as the rock mass's) with
+/// the raised surface; the critical circle searched again at each rise.
+/// A rise whose LEM fails (the table above the ground) is an error.
+pub fn lem_fs_by_rise(scene: &Scene, rises: &[f64]) -> Result<Vec<(f64, f64, f64)>, Error> {
+    use crate::lem::Method;
+    rises
+        .iter()
+        .map(|&rise| {
+            let mut s = scene.clone();
+            let w =
+                s.water.as_mut().ok_or_else(|| SceneError::invalid("water", "the wet Wulong case needs [water]"))?;
+            w.rise = rise;
+            let r = crate::lem::analyse(&crate::drivers::lem::scene_lem_input(&s)?)?;
+            let fs = |m| r.fs.get(m).copied().unwrap_or(f64::NAN);
+            Ok((rise, fs(Method::Bishop), fs(Method::Spencer)))
+        })
+        .collect()
+}
+
+/// The rises of the FS-by-water figure: 0 to 19 m in steps of 1 m (at 20 m the
+/// table would reach the ground at the crest).
+pub fn figure_rises() -> Vec<f64> {
+    (0..=19).map(f64::from).collect()
 }

@@ -8,7 +8,7 @@
 use std::path::Path;
 
 use super::plot::{contour_panels, ContourStyle, Panel, Patch, Quantity};
-use super::section::element_mean_displacement;
+use super::section::{element_mean_displacement, water_lines};
 use crate::drivers::SrmResult;
 use crate::error::Error;
 use crate::model::Model;
@@ -64,10 +64,15 @@ pub fn mechanism_views(result: &SrmResult, model: &Model, path: &Path) -> Result
         _ => "strength reduction".to_string(),
     };
     let panels = [
-        Panel { title: "section: x (m) east, z (m) up".into(), patches: view((0, 2)), lines: Vec::new() },
+        Panel { title: "section: x (m) east, z (m) up".into(), patches: view((0, 2)), lines: water_lines(model) },
         Panel { title: "plan: x (m) east, y (m) north".into(), patches: view((0, 1)), lines: Vec::new() },
     ];
+    let notes = match model.water {
+        Some(_) => vec!["blue, in the section: the water table (and the water level in each crack)".to_string()],
+        None => Vec::new(),
+    };
     let style = ContourStyle {
+        notes,
         columns: 2,
         panel_width: 700,
         y_desc: vec!["z (m)".into(), "y (m)".into()],

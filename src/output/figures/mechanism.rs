@@ -4,8 +4,8 @@
 
 use std::path::Path;
 
-use super::plot::section_contour;
-use super::section::{element_mean_displacement, front_patches};
+use super::plot::{contour_panels, ContourStyle, Panel, Quantity};
+use super::section::{element_mean_displacement, front_patches, water_lines};
 use crate::drivers::SrmResult;
 use crate::error::Error;
 use crate::model::Model;
@@ -24,7 +24,7 @@ pub fn mechanism_png(result: &SrmResult, model: &Model, path: &Path) -> Result<b
         (_, Some(hi)) => format!("strength reduction: no bracket; mechanism at F = {hi:.3}"),
         _ => "strength reduction".to_string(),
     };
-    section_contour(path, &title, "|u - u_elastic| (m)", &patches, &[])?;
+    section_with_water(path, &title, "|u - u_elastic|", Quantity::Displacement, patches, model)?;
     Ok(true)
 }
 
@@ -36,6 +36,26 @@ pub fn slip_band_png(result: &SrmResult, model: &Model, path: &Path) -> Result<b
     let (Some(cells), Some(hi)) = (&result.mechanism_cells, result.bracket[1]) else { return Ok(false) };
     let patches = front_patches(model, |e| cells[e].plastic_shear);
     let title = format!("slip band: plastic shear strain at F = {hi:.3}");
-    section_contour(path, &title, "plastic shear strain (-)", &patches, &[])?;
+    section_with_water(path, &title, "plastic shear strain (-)", Quantity::Plain(""), patches, model)?;
     Ok(true)
+}
+
+/// One section panel with the model's water over it (blue, noted under the
+/// panel).
+fn section_with_water(
+    path: &Path,
+    title: &str,
+    label: &str,
+    quantity: Quantity,
+    patches: Vec<super::plot::Patch>,
+    model: &Model,
+) -> Result<(), Error> {
+    let lines = water_lines(model);
+    let notes = if lines.is_empty() {
+        Vec::new()
+    } else {
+        vec!["blue: the water table (and the water level in each crack)".to_string()]
+    };
+    let panel = Panel { title: String::new(), patches, lines };
+    contour_panels(path, title, label, quantity, &[panel], &ContourStyle { notes, ..ContourStyle::default() })
 }

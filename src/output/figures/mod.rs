@@ -12,5 +12,6 @@ pub mod mechanism;
 pub mod plot;
 pub mod section;
 pub mod stereonet;
+pub mod water;
 
 pub use plot::*;

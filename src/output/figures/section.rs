@@ -2,7 +2,9 @@
 //! element contributes its corners on its lower-y side, ordered around their
 //! centroid.
 
-use super::plot::Patch;
+use plotters::style::RGBColor;
+
+use super::plot::{Line, Patch};
 use crate::model::Model;
 
 /// The patch of one element from its corner positions.
@@ -117,3 +119,35 @@ pub fn spring_point(model: &Model, u: &[f64], scale: f64, s: usize) -> (f64, f64
     let p = |i: usize, k: usize| model.x0[i][k] + scale * u[3 * i + k];
     (0.5 * (p(a, 0) + p(b, 0)), 0.5 * (p(a, 2) + p(b, 2)))
 }
+
+/// The water a model carries, drawn over its section in blue: the phreatic
+/// surface over the model's x-range, and each water-filled crack's level as a
+/// short horizontal stroke across the crack (its springs' x-range, widened so
+/// that a vertical crack shows). Empty without water.
+pub fn water_lines(model: &Model) -> Vec<Line> {
+    let Some(w) = &model.water else { return Vec::new() };
+    let blue = |points| Line { points, colour: WATER_BLUE, width: 3 };
+    let (x0, x1) = model.x0.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p[0]), b.max(p[0])));
+    let mut lines = Vec::new();
+    if let Some(s) = &w.surface {
+        let mut xs = vec![x0];
+        xs.extend(s.points.iter().map(|p| p[0]).filter(|&x| x > x0 && x < x1));
+        xs.push(x1);
+        lines.push(blue(xs.into_iter().map(|x| (x, s.level(x))).collect()));
+    }
+    let margin = 0.01 * (x1 - x0);
+    for (group, level) in &w.cracks {
+        let Some(k) = model.interfaces.iter().position(|i| &i.name == group) else { continue };
+        let sp = &model.springs;
+        let xs = (0..sp.len()).filter(|&s| sp.interface[s] as usize == k).map(|s| model.x0[sp.a[s] as usize][0]);
+        let (a, b) = xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)));
+        if a.is_finite() {
+            lines.push(blue(vec![(a - margin, *level), (b + margin, *level)]));
+        }
+    }
+    lines
+}
+
+/// The colour of water over a section (on the sequential map's light end
+/// and its dark end alike).
+pub const WATER_BLUE: RGBColor = RGBColor(0, 90, 220);
