@@ -24,17 +24,22 @@ pub use crate::harness::registry::SLOPE_MESHES;
 /// The paper slope's `.geo` at `refine`, meshed with gmsh into `dir`
 /// (`slope-r<refine>.msh`); the existing file is reused.
 pub fn slope_mesh(slope_geo: &Path, refine: u32, dir: &Path) -> Result<PathBuf, Error> {
-    let msh = dir.join(format!("slope-r{refine}.msh"));
-    if msh.is_file() {
-        return Ok(msh);
-    }
-    std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
-    let geo = dir.join(format!("slope-r{refine}.geo"));
     let include = slope_geo.canonicalize().map_err(|e| Error::io(slope_geo, e))?;
     let text = format!(
         "// The paper slope at refine = {refine} (cdem perf).\nrefine = {refine};\nInclude \"{}\";\n",
         include.display()
     );
+    mesh_text(&text, &format!("slope-r{refine}"), dir)
+}
+
+/// Meshes `text` (a `.geo`) with gmsh as `dir/name.msh`, reusing the file.
+pub fn mesh_text(text: &str, name: &str, dir: &Path) -> Result<PathBuf, Error> {
+    let msh = dir.join(format!("{name}.msh"));
+    if msh.is_file() {
+        return Ok(msh);
+    }
+    std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+    let geo = dir.join(format!("{name}.geo"));
     std::fs::write(&geo, text).map_err(|e| Error::io(&geo, e))?;
     crate::mesh::gmsh::regenerate(&geo, &msh)?;
     Ok(msh)

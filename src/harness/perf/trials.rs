@@ -20,6 +20,7 @@ use std::time::Instant;
 use serde::Serialize;
 
 use super::fit_power;
+use super::scaling::mesh_text;
 use crate::drivers::{run_srm, SrmProgress};
 use crate::error::Error;
 use crate::harness::registry as reg;
@@ -77,19 +78,6 @@ pub fn wedge_mesh(root: &Path, size: f64, dir: &Path) -> Result<PathBuf, Error> 
         return Err(Error::Gmsh(format!("{}: no Mesh.MeshSizeMax line to replace", geo.display())));
     };
     mesh_text(&text.replacen(line, &format!("Mesh.MeshSizeMax = {size};"), 1), &format!("wedge-h{size}"), dir)
-}
-
-/// Meshes `text` (a `.geo`) with gmsh as `dir/name.msh`, reusing the file.
-fn mesh_text(text: &str, name: &str, dir: &Path) -> Result<PathBuf, Error> {
-    let msh = dir.join(format!("{name}.msh"));
-    if msh.is_file() {
-        return Ok(msh);
-    }
-    std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
-    let geo = dir.join(format!("{name}.geo"));
-    std::fs::write(&geo, text).map_err(|e| Error::io(&geo, e))?;
-    crate::mesh::gmsh::regenerate(&geo, &msh)?;
-    Ok(msh)
 }
 
 /// One `cdem srm` of `scene` on `mesh`, timed.

@@ -8,7 +8,7 @@
 use std::path::Path;
 
 use super::plot::{contour_panels, ContourStyle, Panel, Patch, Quantity};
-use super::section::{element_mean_displacement, water_lines};
+use super::section::{element_mean_displacement, water_lines, water_notes};
 use crate::drivers::SrmResult;
 use crate::error::Error;
 use crate::model::Model;
@@ -67,12 +67,8 @@ pub fn mechanism_views(result: &SrmResult, model: &Model, path: &Path) -> Result
         Panel { title: "section: x (m) east, z (m) up".into(), patches: view((0, 2)), lines: water_lines(model) },
         Panel { title: "plan: x (m) east, y (m) north".into(), patches: view((0, 1)), lines: Vec::new() },
     ];
-    let notes = match model.water {
-        Some(_) => vec!["blue, in the section: the water table (and the water level in each crack)".to_string()],
-        None => Vec::new(),
-    };
     let style = ContourStyle {
-        notes,
+        notes: water_notes(model),
         columns: 2,
         panel_width: 700,
         y_desc: vec!["z (m)".into(), "y (m)".into()],

@@ -5,7 +5,7 @@
 use std::path::Path;
 
 use super::plot::{contour_panels, ContourStyle, Panel, Quantity};
-use super::section::{element_mean_displacement, front_patches, water_lines};
+use super::section::{element_mean_displacement, front_patches, water_lines, water_notes};
 use crate::drivers::SrmResult;
 use crate::error::Error;
 use crate::model::Model;
@@ -50,12 +50,7 @@ fn section_with_water(
     patches: Vec<super::plot::Patch>,
     model: &Model,
 ) -> Result<(), Error> {
-    let lines = water_lines(model);
-    let notes = if lines.is_empty() {
-        Vec::new()
-    } else {
-        vec!["blue: the water table (and the water level in each crack)".to_string()]
-    };
-    let panel = Panel { title: String::new(), patches, lines };
+    let notes = water_notes(model);
+    let panel = Panel { title: String::new(), patches, lines: water_lines(model) };
     contour_panels(path, title, label, quantity, &[panel], &ContourStyle { notes, ..ContourStyle::default() })
 }

@@ -127,7 +127,8 @@ pub fn spring_point(model: &Model, u: &[f64], scale: f64, s: usize) -> (f64, f64
 pub fn water_lines(model: &Model) -> Vec<Line> {
     let Some(w) = &model.water else { return Vec::new() };
     let blue = |points| Line { points, colour: WATER_BLUE, width: 3 };
-    let (x0, x1) = model.x0.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p[0]), b.max(p[0])));
+    let (lo, hi) = crate::model::point_bounds(model.x0.iter().copied());
+    let (x0, x1) = (lo[0], hi[0]);
     let mut lines = Vec::new();
     if let Some(s) = &w.surface {
         let mut xs = vec![x0];
@@ -151,3 +152,12 @@ pub fn water_lines(model: &Model) -> Vec<Line> {
 /// The colour of water over a section (on the sequential map's light end
 /// and its dark end alike).
 pub const WATER_BLUE: RGBColor = RGBColor(0, 90, 220);
+
+/// The legend of [`water_lines`] under a figure: one line, or none without
+/// water.
+pub fn water_notes(model: &Model) -> Vec<String> {
+    match model.water {
+        Some(_) => vec!["blue, in the section: the water table (and the water level in each crack)".to_string()],
+        None => Vec::new(),
+    }
+}
