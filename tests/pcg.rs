@@ -132,7 +132,7 @@ fn column_model() -> Model {
 }
 
 fn rules() -> StopRules<'static> {
-    StopRules { tolerance: 1e-8, max_steps: 100, sliding: None, history_every: 1 }
+    StopRules { tolerance: 1e-8, max_steps: 100, sliding: None, foresight: None, history_every: 1 }
 }
 
 /// A stiffness that is not positive definite: the preconditioner of the

@@ -20,7 +20,7 @@ fn column() -> (cdem::model::Model, Solver, State, f64) {
 }
 
 fn rules(tolerance: f64, max_steps: usize) -> StopRules<'static> {
-    StopRules { tolerance, max_steps, sliding: None, history_every: 10 }
+    StopRules { tolerance, max_steps, sliding: None, foresight: None, history_every: 10 }
 }
 
 #[test]

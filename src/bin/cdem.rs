@@ -469,8 +469,14 @@ fn srm(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
         }
         SrmProgress::TrialEnd(t) => pb.suspend(|| {
             eprintln!(
-                "F = {:.4}: {:?} after {} steps, max displacement {:.3e} m, {} failed springs, {:.3e} m^3 yielded",
-                t.factor, t.outcome, t.steps, t.max_displacement, t.failed_springs, t.yielded_volume
+                "F = {:.4}: {:?}{} after {} steps, max displacement {:.3e} m, {} failed springs, {:.3e} m^3 yielded",
+                t.factor,
+                t.outcome,
+                if t.foreseen { " (foreseen: the ratio decays too slowly for the budget)" } else { "" },
+                t.steps,
+                t.max_displacement,
+                t.failed_springs,
+                t.yielded_volume
             )
         }),
     })?;
@@ -501,8 +507,8 @@ fn srm(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
     }
     if result.hi_outcome == Some(cdem::EndState::Undecided) {
         println!(
-            "note: the bracket's upper end F = {} ran out of its {} steps without deciding (counted unstable, as FLAC \
-             counts a trial that does not converge); {}",
+            "note: the bracket's upper end F = {} did not decide within its {} steps (or foreseeably would not: its \
+             ratio decayed too slowly) and is counted unstable, as FLAC counts a trial that does not converge; {}",
             show(hi),
             result.trial_budget,
             match result.sliding_from {

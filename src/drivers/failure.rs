@@ -154,7 +154,7 @@ pub fn run(
     let end = match report.stop {
         Stop::Converged => EndState::Equilibrium,
         Stop::Sliding => EndState::GlobalSliding,
-        Stop::Budget | Stop::Caller => EndState::Undecided,
+        Stop::Budget | Stop::Foreseen | Stop::Caller => EndState::Undecided,
     };
     Ok(FailureResult { report, end, u_elastic, stages, failed_at, frames })
 }

@@ -11,7 +11,10 @@
 //! or always with [`TrialStart::Elastic`]): `Equilibrium` is
 //! stable, `GlobalSliding` unstable, and `Undecided` (the per-trial step
 //! budget, by default the model's response time `N_r`, ran out) is counted
-//! as unstable, as FLAC counts a trial that does not converge. Brittle
+//! as unstable, as FLAC counts a trial that does not converge; a trial
+//! whose ratio decays too slowly to reach the tolerance within twice its
+//! budget is stopped as `Undecided` at once ([`Foresight::TRIALS`],
+//! `Trial::foreseen`) rather than stepped to the budget. Brittle
 //! interfaces lose their (reduced) cohesion and tensile strength where they
 //! fail, ductile ones keep them (scene key `softening`).
 //!
@@ -33,7 +36,7 @@ use crate::model::Model;
 use crate::physics::joint::JointState;
 use crate::physics::plastic::CellPlastic;
 use crate::scene::{FailureParams, Scene};
-use crate::solver::{PhasePlan, State, StepView};
+use crate::solver::{Foresight, PhasePlan, State, StepView, Stop};
 use crate::summary::{max_displacement, EndState};
 
 /// Bracket growth factor per trial before a bracket is found.
@@ -61,6 +64,9 @@ pub enum TrialStart {
 pub struct Trial {
     pub factor: f64,
     pub outcome: EndState,
+    /// An `Undecided` trial stopped before its budget because the ratio's
+    /// decay foresaw it ([`crate::solver::Foresight`]).
+    pub foreseen: bool,
     pub steps: usize,
     /// Largest displacement since the elastic state (m).
     pub max_displacement: f64,
@@ -257,7 +263,8 @@ impl Reduction {
             .into());
         }
         let t = std::time::Instant::now();
-        let plan = phase_plan(&run.model, &scene.solver, &params, usize::MAX, None)?;
+        let mut plan = phase_plan(&run.model, &scene.solver, &params, usize::MAX, None)?;
+        plan.foresight = Some(Foresight::TRIALS);
         let plan_setup_s = t.elapsed().as_secs_f64();
         let steps = run.elastic.steps;
         let strengths = run.state.joints.clone();
@@ -287,6 +294,7 @@ impl Reduction {
         let trial = Trial {
             factor,
             outcome: r.end,
+            foreseen: r.report.stop == Stop::Foreseen,
             steps: r.report.steps,
             max_displacement: max_displacement(&since),
             failed_springs: failed_springs(&state.springs.status).total(),

@@ -118,8 +118,13 @@ impl MohrCoulomb {
     }
 
     fn excess(&self, p: usize, s: [f64; 3]) -> f64 {
-        let (m, k, _) = self.plane(p);
-        dot3(m, s) - k
+        let (a, b) = (1.0 + self.sin_phi, 1.0 - self.sin_phi);
+        match p {
+            0 => a * s[0] - b * s[2] - self.k,
+            1 => a * s[0] - b * s[1] - self.k,
+            2 => a * s[1] - b * s[2] - self.k,
+            t => s[t - 3] - self.tensile,
+        }
     }
 
     /// A cheap sufficient test that `sigma` (Voigt, tension positive) is
@@ -139,6 +144,28 @@ impl MohrCoulomb {
         shear < 0.0 && tension < 0.0
     }
 
+    /// The return onto the main plane alone (the active set `[0]`, by far
+    /// the most frequent), in closed form: `s = s* - dg D n` with
+    /// `dg = (m . s* - k) / (m . D n)`; None if the result violates another
+    /// plane (an edge, the apex or the cut-off is active: the general search
+    /// decides). The same return as `return_to(.., &[0], ..)`.
+    fn main_plane_return(&self, lame: Lame, s: [f64; 3], excess: f64, tol: f64) -> Option<[f64; 3]> {
+        let Lame { lambda, mu } = lame;
+        let (sf, sp) = (self.sin_phi, self.sin_psi);
+        let (n1, n3) = (1.0 + sp, -(1.0 - sp));
+        // D n with D = (lambda + 2 mu) on the diagonal, lambda off it.
+        let dn =
+            [(lambda + 2.0 * mu) * n1 + lambda * n3, lambda * n1 + lambda * n3, lambda * n1 + (lambda + 2.0 * mu) * n3];
+        let denom = (1.0 + sf) * dn[0] - (1.0 - sf) * dn[2];
+        if !(denom > 0.0) {
+            return None;
+        }
+        let dg = excess / denom;
+        let r = [s[0] - dg * dn[0], s[1] - dg * dn[1], s[2] - dg * dn[2]];
+        let admissible = (1..PLANES).all(|p| self.excess(p, r) <= tol);
+        admissible.then_some(r)
+    }
+
     /// The return mapping: the stress (Voigt xx yy zz yz xz xy, Pa, tension
     /// positive) on or inside the surface for the elastic trial stress
     /// `trial`, and what it did. See the module documentation.
@@ -152,8 +179,16 @@ impl MohrCoulomb {
         let cut = if self.tensile.is_finite() { self.tensile.abs() } else { 0.0 };
         let scale = values.iter().fold(self.k.abs().max(cut), |a, v| a.max(v.abs()));
         let tol = 1e-12 * scale.max(f64::MIN_POSITIVE);
-        if self.violation(values) <= tol {
+        // With s1 >= s2 >= s3 the main plane and the cut-off on s1 bound the
+        // other four: the largest violation is one of these two.
+        let main = self.excess(0, values);
+        if main.max(values[0] - self.tensile) <= tol {
             return (trial, Yield::Elastic);
+        }
+        if main > tol {
+            if let Some(r) = self.main_plane_return(lame, values, main, tol) {
+                return (spectral_update(&trial, values, r), Yield::Shear);
+            }
         }
         let d = principal_elasticity(lame);
         let planes = [0, 1, 2, 3, 4, 5].map(|p| {
@@ -258,9 +293,11 @@ fn principal_values(sigma: &[f64; 6]) -> [f64; 3] {
     // det((A - q I) / p) / 2.
     let det = a * (b * c - yz * yz) - xy * (xy * c - yz * xz) + xz * (xy * yz - b * xz);
     let r = (det / (2.0 * p * p * p)).clamp(-1.0, 1.0);
-    let angle = r.acos() / 3.0;
-    let s1 = q + 2.0 * p * angle.cos();
-    let s3 = q + 2.0 * p * (angle + 2.0 * std::f64::consts::FRAC_PI_3).cos();
+    // cos(a + 2 pi / 3) = -cos(a) / 2 - sin(a) sqrt(3) / 2, a in [0, pi / 3].
+    let c = (r.acos() / 3.0).cos();
+    let s = (1.0 - c * c).max(0.0).sqrt();
+    let s1 = q + 2.0 * p * c;
+    let s3 = q - p * (c + 3f64.sqrt() * s);
     [s1, 3.0 * q - s1 - s3, s3]
 }
 
@@ -565,5 +602,41 @@ mod tests {
             let p = principal_of(&s);
             assert!(mc.violation(p) < 1e-6 * 1e6, "{trial:?} -> {p:?}");
         }
+    }
+
+    #[test]
+    fn the_closed_form_main_plane_return_is_the_general_one() {
+        // Wherever the closed form answers, the general search's set [0]
+        // gives the same stress to the last bit; where it declines, so does
+        // the set [0].
+        let l = lame();
+        let mc = rock(8e4, 25.0, 2e4, 5.0);
+        let d = principal_elasticity(l);
+        let planes = [0, 1, 2, 3, 4, 5].map(|p| {
+            let (m, k, n) = mc.plane(p);
+            (m, k, mat_vec(&d, n))
+        });
+        let (mut seed, mut answered) = (7u64, 0);
+        let mut next = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+        };
+        for _ in 0..2000 {
+            let mut v = [0; 3].map(|_| 1e6 * next());
+            v.sort_by(|a, b| b.total_cmp(a));
+            let tol = 1e-12 * 1e6;
+            let main = mc.excess(0, v);
+            if main <= tol {
+                continue;
+            }
+            let general = {
+                let ps = planes.map(|(m, k, dn)| Plane { m, k, dn, excess: dot3(m, v) - k });
+                return_to(&ps, &[0], v, tol).map(|(r, _)| r)
+            };
+            let fast = mc.main_plane_return(l, v, main, tol);
+            assert_eq!(fast, general, "{v:?}");
+            answered += usize::from(fast.is_some());
+        }
+        assert!(answered > 100, "the sweep reaches the main plane ({answered})");
     }
 }

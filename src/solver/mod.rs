@@ -27,7 +27,7 @@ pub use inertia::Inertia;
 pub use params::{DampingKind, ElasticSolver, SolverParams};
 pub use pcg::Pcg;
 pub use plan::PhasePlan;
-pub use relax::{relax, Observer, RunReport, Sliding, StepView, Stop, StopRules};
+pub use relax::{relax, Foresight, Observer, RunReport, Sliding, StepView, Stop, StopRules};
 
 use serde::Serialize;
 

@@ -9,7 +9,7 @@
 //!   builds the [`StopRules`]; a phase adds its sliding rule).
 
 use super::budget::{self, PHASE2_RESPONSE_TIMES};
-use super::relax::{relax, Observer, RunReport, Sliding, StopRules};
+use super::relax::{relax, Foresight, Observer, RunReport, Sliding, StopRules};
 use super::{ElasticSolver, Pcg, Solver, SolverParams, State};
 use crate::error::SolveError;
 use crate::model::Model;
@@ -31,6 +31,8 @@ pub struct PhasePlan {
     pub tolerance: f64,
     /// A history row every this many steps.
     pub history_every: usize,
+    /// The foresight rule of its relaxations (strength-reduction trials).
+    pub foresight: Option<Foresight>,
 }
 
 impl PhasePlan {
@@ -46,7 +48,7 @@ impl PhasePlan {
             ElasticSolver::Pcg => (Method::Pcg(Box::new(Pcg::new(model)?)), true),
         };
         let budget = budget::step_budget(model, params, block, params.max_steps, 1);
-        Ok(Self { method, budget, tolerance: params.tolerance, history_every })
+        Ok(Self { method, budget, tolerance: params.tolerance, history_every, foresight: None })
     }
 
     /// Phase 2 (and each strength-reduction trial): dynamic relaxation with
@@ -68,12 +70,21 @@ impl PhasePlan {
             _ => Solver::with_masses(model, params.clone(), block)?,
         };
         let budget = budget::step_budget(model, params, block, max_steps, PHASE2_RESPONSE_TIMES);
-        Ok(Self { method: Method::Dr(Box::new(solver)), budget, tolerance: params.tolerance, history_every })
+        Ok(Self {
+            method: Method::Dr(Box::new(solver)),
+            budget,
+            tolerance: params.tolerance,
+            history_every,
+            foresight: None,
+        })
     }
 
     /// The stop rules of one relaxation of this phase.
     pub fn rules<'a>(&self, sliding: Option<Sliding<'a>>) -> StopRules<'a> {
-        StopRules::new(self.tolerance, self.budget, sliding, self.history_every)
+        StopRules {
+            foresight: self.foresight,
+            ..StopRules::new(self.tolerance, self.budget, sliding, self.history_every)
+        }
     }
 
     /// Takes the dynamic-relaxation solver out (phase 2 goes on with it).

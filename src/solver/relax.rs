@@ -15,7 +15,12 @@
 //!    displacement rate does not decay: a mass keeps moving), or the largest
 //!    displacement since `reference` passed `displacement`;
 //! 3. **budget**: `max_steps` steps taken ([`Stop::Budget`]);
-//! 4. **caller**: the observer returns `Break` ([`Stop::Caller`]).
+//! 4. **foresight** (if given; strength-reduction trials), checked at the
+//!    end of every sliding window ([`Stop::Foreseen`]): the ratio has
+//!    decayed in each of the last `windows` windows, and at its mean rate
+//!    over them it would reach `tolerance` only after more than `margin`
+//!    times `max_steps` steps in all: the budget rule would fire, later;
+//! 5. **caller**: the observer returns `Break` ([`Stop::Caller`]).
 
 use std::ops::ControlFlow;
 
@@ -33,7 +38,51 @@ pub enum Stop {
     Converged,
     Sliding,
     Budget,
+    /// The budget foreseen: the ratio decays too slowly to reach the
+    /// tolerance within it ([`Foresight`]).
+    Foreseen,
     Caller,
+}
+
+/// Rule 4: the budget rule foreseen from the ratio's decay.
+///
+/// Near a strength-reduction trial's critical factor the relaxation slows
+/// down (the slowest mode softens as the factor nears the factor of
+/// safety): the ratio decays geometrically, by a factor `q` per window that
+/// tends to 1. At the end of each sliding window, if the ratio fell in each
+/// of the last `windows` windows, `q` is their mean rate and the steps still
+/// needed are `window ln(ratio / tolerance) / ln(1 / q)`. If the steps taken
+/// plus those exceed `margin` times the budget, the trial stops as the
+/// budget would have stopped it, only sooner. Measured on near-critical
+/// plastic trials, `q` creeps up towards 1 as the trial goes on, so the
+/// prediction is optimistic, and `margin` > 1 leaves room for a decay that
+/// speeds up (docs/method.md section 2.9b).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Foresight {
+    /// Windows of decay the rate is measured over.
+    pub windows: usize,
+    /// The predicted total must exceed this many budgets.
+    pub margin: f64,
+}
+
+impl Foresight {
+    /// The rule of strength-reduction trials: 5 windows (50 crossings), twice
+    /// the budget.
+    pub const TRIALS: Foresight = Foresight { windows: 5, margin: 2.0 };
+
+    /// Steps still needed from `ratios` (one per window, the newest last) to
+    /// reach `tolerance`, if the last `windows` windows each decayed.
+    pub fn steps_needed(&self, ratios: &[f64], window: usize, tolerance: f64) -> Option<f64> {
+        let k = self.windows.max(1);
+        let tail = ratios.get(ratios.len().checked_sub(k + 1)?..)?;
+        let decaying = tail.windows(2).all(|w| w[1] < w[0]) && tail[0] > 0.0;
+        let (first, last) = (tail[0], tail[k]);
+        if !decaying || !(last > tolerance) {
+            return None;
+        }
+        let rate = (first / last).ln() / k as f64; // ln(1 / q) per window
+        Some(window as f64 * (last / tolerance).ln() / rate)
+    }
 }
 
 /// Global sliding: the mass keeps moving away from a reference state.
@@ -118,6 +167,9 @@ pub struct StopRules<'a> {
     /// Step budget of this relaxation.
     pub max_steps: usize,
     pub sliding: Option<Sliding<'a>>,
+    /// Stops a relaxation whose budget is foreseen (checked with the
+    /// sliding rule's windows; without a sliding rule it is not checked).
+    pub foresight: Option<Foresight>,
     /// A history row every this many (global) steps, and at convergence
     /// (a phase that stops by sliding, budget or caller ends on its last
     /// regular row).
@@ -127,7 +179,7 @@ pub struct StopRules<'a> {
 impl<'a> StopRules<'a> {
     /// The rules of one relaxation (the one constructor the drivers use).
     pub fn new(tolerance: f64, max_steps: usize, sliding: Option<Sliding<'a>>, history_every: usize) -> Self {
-        Self { tolerance, max_steps, sliding, history_every }
+        Self { tolerance, max_steps, sliding, foresight: None, history_every }
     }
 }
 
@@ -179,6 +231,21 @@ fn at_rest(ratio: f64, tolerance: f64, kinetic: f64, last_kinetic: f64) -> bool 
     ratio < tolerance && kinetic <= last_kinetic
 }
 
+/// Rule 4 at step `steps` of a relaxation: records the ratio at the end of
+/// each sliding window in `ratios`, and tells whether the budget is foreseen.
+fn foreseen(rules: &StopRules, ratios: &mut Vec<f64>, ratio: f64, steps: usize) -> bool {
+    let (Some(f), Some(s)) = (rules.foresight, rules.sliding) else {
+        return false;
+    };
+    let window = s.window.max(1);
+    if !steps.is_multiple_of(window) {
+        return false;
+    }
+    ratios.push(ratio);
+    f.steps_needed(ratios, window, rules.tolerance)
+        .is_some_and(|more| steps as f64 + more > f.margin * rules.max_steps as f64)
+}
+
 /// Steps `state` until a rule of `rules` fires (see the module doc).
 pub fn relax(
     solver: &mut Solver,
@@ -193,6 +260,7 @@ pub fn relax(
     let mut stop = None;
     let mut watch = SlidingWatch::default();
     let mut last_kinetic = f64::INFINITY;
+    let mut window_ratios = Vec::new();
     while stop.is_none() {
         let (unbalanced, kinetic) = solver.step(model, state)?;
         let steps = state.step - first;
@@ -205,6 +273,8 @@ pub fn relax(
             Some(Stop::Sliding)
         } else if steps >= rules.max_steps {
             Some(Stop::Budget)
+        } else if foreseen(rules, &mut window_ratios, ratio, steps) {
+            Some(Stop::Foreseen)
         } else {
             None
         };
@@ -223,7 +293,21 @@ pub fn relax(
 
 #[cfg(test)]
 mod tests {
-    use super::at_rest;
+    use super::{at_rest, Foresight};
+
+    #[test]
+    fn foresight_extrapolates_a_geometric_decay() {
+        let f = Foresight { windows: 3, margin: 2.0 };
+        // q = 1/2 per window from 1e-2: 1e-5 is reached after ln(1000) / ln 2
+        // windows more than the last's 1.25e-3, i.e. ln(125) / ln(2) windows.
+        let ratios = [1e-2, 5e-3, 2.5e-3, 1.25e-3];
+        let more = f.steps_needed(&ratios, 100, 1e-5).unwrap();
+        assert!((more - 100.0 * 125f64.ln() / 2f64.ln()).abs() < 1e-9, "{more}");
+        // Too few windows, a rise among them, or already below: no forecast.
+        assert_eq!(f.steps_needed(&ratios[1..], 100, 1e-5), None);
+        assert_eq!(f.steps_needed(&[1e-2, 5e-3, 6e-3, 1e-3], 100, 1e-5), None);
+        assert_eq!(f.steps_needed(&ratios, 100, 2e-3), None);
+    }
 
     #[test]
     fn a_small_ratio_while_the_mass_still_speeds_up_is_not_rest() {

@@ -1,0 +1,65 @@
+//! Traces strength-reduction trials window by window: for each factor given
+//! (in order, warm-started as `cdem srm` does), the mean displacement since
+//! the trial's start, its increment per sliding window, the unbalanced ratio
+//! and the kinetic energy. The measurement behind the plastic-flow rule of
+//! docs/method.md section 2.9b.
+//!
+//! `cargo run --release --example trial_probe -- SCENE F1 F2 ...`
+
+use std::ops::ControlFlow;
+
+use cdem::drivers::failure::sliding_rule;
+use cdem::drivers::phase::{Phase, Watch};
+use cdem::drivers::srm::{Reduction, TrialStart};
+use cdem::solver::StepView;
+
+struct Trace<'a> {
+    model: &'a cdem::model::Model,
+    start: Vec<f64>,
+    window: usize,
+    last: f64,
+}
+
+impl Watch for Trace<'_> {
+    fn step(&mut self, _phase: Phase, view: &StepView) -> ControlFlow<()> {
+        if view.steps == 1 {
+            self.start = view.state.u.clone();
+            self.last = 0.0;
+        }
+        if view.steps.is_multiple_of(self.window) {
+            let rule = sliding_rule(self.model, &self.start, &Default::default());
+            let mean = rule.mean_displacement(&view.state.u);
+            let max = cdem::solver::relax::max_displacement_since(&view.state.u, &self.start);
+            println!(
+                "  step {:6} mean {:.4e} incr {:.4e} max {:.4e} ratio {:.3e} kinetic {:.3e}",
+                view.steps,
+                mean,
+                mean - self.last,
+                max,
+                view.ratio,
+                view.kinetic
+            );
+            self.last = mean;
+        }
+        ControlFlow::Continue(())
+    }
+}
+
+fn main() {
+    let mut args = std::env::args().skip(1);
+    let path = args.next().expect("SCENE F...");
+    let scene = cdem::scene::Scene::load(std::path::Path::new(&path)).unwrap();
+    let (mut red, _) = Reduction::new(&scene, TrialStart::Warm).unwrap();
+    let model = red.model.clone();
+    let window = sliding_rule(&model, &vec![0.0; model.mass.len() * 3], &Default::default()).window;
+    println!("window {window} steps, budget {}", red.budget());
+    for f in args.map(|a| a.parse::<f64>().unwrap()) {
+        println!("F = {f}");
+        let mut trace = Trace { model: &model, start: Vec::new(), window, last: 0.0 };
+        let run = red.trial(f, &mut trace).unwrap();
+        println!(
+            "  -> {:?} after {} steps, max {:.3e}",
+            run.trial.outcome, run.trial.steps, run.trial.max_displacement
+        );
+    }
+}
