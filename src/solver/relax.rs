@@ -17,7 +17,8 @@
 //! 3. **budget**: `max_steps` steps taken ([`Stop::Budget`]);
 //! 4. **foresight** (if given; strength-reduction trials), checked at the
 //!    end of every sliding window ([`Stop::Foreseen`]): the ratio has
-//!    decayed in each of the last `windows` windows, and at its mean rate
+//!    decayed in each of the last `windows` windows, the mass has slowed
+//!    down in each (the mean displacement's increments shrink), and at its mean rate
 //!    over them it would reach `tolerance` only after more than `margin`
 //!    times `max_steps` steps in all: the budget rule would fire, later;
 //! 5. **caller**: the observer returns `Break` ([`Stop::Caller`]).
@@ -50,7 +51,9 @@ pub enum Stop {
 /// down (the slowest mode softens as the factor nears the factor of
 /// safety): the ratio decays geometrically, by a factor `q` per window that
 /// tends to 1. At the end of each sliding window, if the ratio fell in each
-/// of the last `windows` windows, `q` is their mean rate and the steps still
+/// of the last `windows` windows and the mass slowed down in each (a block
+/// sliding steadily can have a falling ratio: the sliding rule decides it),
+/// `q` is their mean rate and the steps still
 /// needed are `window ln(ratio / tolerance) / ln(1 / q)`. If the steps taken
 /// plus those exceed `margin` times the budget, the trial stops as the
 /// budget would have stopped it, only sooner. Measured on near-critical
@@ -70,14 +73,21 @@ impl Foresight {
     /// the budget.
     pub const TRIALS: Foresight = Foresight { windows: 5, margin: 2.0 };
 
-    /// Steps still needed from `ratios` (one per window, the newest last) to
-    /// reach `tolerance`, if the last `windows` windows each decayed.
-    pub fn steps_needed(&self, ratios: &[f64], window: usize, tolerance: f64) -> Option<f64> {
+    /// Steps still needed to reach `tolerance`, from `history`: one
+    /// `(ratio, mean displacement)` per window end, the newest last. None
+    /// unless, over the last `windows` windows, the ratio fell in each and
+    /// the mean displacement grew by less in each than in the one before (a
+    /// mass that keeps sliding may have a falling ratio; it is the sliding
+    /// rule's).
+    pub fn steps_needed(&self, history: &[(f64, f64)], window: usize, tolerance: f64) -> Option<f64> {
         let k = self.windows.max(1);
-        let tail = ratios.get(ratios.len().checked_sub(k + 1)?..)?;
-        let decaying = tail.windows(2).all(|w| w[1] < w[0]) && tail[0] > 0.0;
-        let (first, last) = (tail[0], tail[k]);
-        if !decaying || !(last > tolerance) {
+        let tail = history.get(history.len().checked_sub(k + 2)?..)?;
+        let increments: Vec<f64> = tail.windows(2).map(|w| w[1].1 - w[0].1).collect();
+        let slowing = increments.windows(2).all(|w| w[1] < w[0]);
+        let ratios = &tail[1..];
+        let decaying = ratios.windows(2).all(|w| w[1].0 < w[0].0) && ratios[0].0 > 0.0;
+        let (first, last) = (ratios[0].0, ratios[k].0);
+        if !decaying || !slowing || !(last > tolerance) {
             return None;
         }
         let rate = (first / last).ln() / k as f64; // ln(1 / q) per window
@@ -231,9 +241,10 @@ fn at_rest(ratio: f64, tolerance: f64, kinetic: f64, last_kinetic: f64) -> bool 
     ratio < tolerance && kinetic <= last_kinetic
 }
 
-/// Rule 4 at step `steps` of a relaxation: records the ratio at the end of
-/// each sliding window in `ratios`, and tells whether the budget is foreseen.
-fn foreseen(rules: &StopRules, ratios: &mut Vec<f64>, ratio: f64, steps: usize) -> bool {
+/// Rule 4 at step `steps` of a relaxation: records the ratio and the mean
+/// displacement at the end of each sliding window in `history`, and tells
+/// whether the budget is foreseen.
+fn foreseen(rules: &StopRules, history: &mut Vec<(f64, f64)>, ratio: f64, u: &[f64], steps: usize) -> bool {
     let (Some(f), Some(s)) = (rules.foresight, rules.sliding) else {
         return false;
     };
@@ -241,8 +252,8 @@ fn foreseen(rules: &StopRules, ratios: &mut Vec<f64>, ratio: f64, steps: usize) 
     if !steps.is_multiple_of(window) {
         return false;
     }
-    ratios.push(ratio);
-    f.steps_needed(ratios, window, rules.tolerance)
+    history.push((ratio, s.mean_displacement(u)));
+    f.steps_needed(history, window, rules.tolerance)
         .is_some_and(|more| steps as f64 + more > f.margin * rules.max_steps as f64)
 }
 
@@ -260,7 +271,7 @@ pub fn relax(
     let mut stop = None;
     let mut watch = SlidingWatch::default();
     let mut last_kinetic = f64::INFINITY;
-    let mut window_ratios = Vec::new();
+    let mut window_history = Vec::new();
     while stop.is_none() {
         let (unbalanced, kinetic) = solver.step(model, state)?;
         let steps = state.step - first;
@@ -273,7 +284,7 @@ pub fn relax(
             Some(Stop::Sliding)
         } else if steps >= rules.max_steps {
             Some(Stop::Budget)
-        } else if foreseen(rules, &mut window_ratios, ratio, steps) {
+        } else if foreseen(rules, &mut window_history, ratio, &state.u, steps) {
             Some(Stop::Foreseen)
         } else {
             None
@@ -298,15 +309,19 @@ mod tests {
     #[test]
     fn foresight_extrapolates_a_geometric_decay() {
         let f = Foresight { windows: 3, margin: 2.0 };
-        // q = 1/2 per window from 1e-2: 1e-5 is reached after ln(1000) / ln 2
-        // windows more than the last's 1.25e-3, i.e. ln(125) / ln(2) windows.
-        let ratios = [1e-2, 5e-3, 2.5e-3, 1.25e-3];
-        let more = f.steps_needed(&ratios, 100, 1e-5).unwrap();
+        // q = 1/2 per window to 1.25e-3: 1e-5 is ln(125) / ln(2) windows on.
+        let at = |r: [f64; 5], m: [f64; 5]| -> Vec<(f64, f64)> { r.into_iter().zip(m).collect() };
+        let slowing = [0.0, 1.0, 1.5, 1.75, 1.875];
+        let h = at([2e-2, 1e-2, 5e-3, 2.5e-3, 1.25e-3], slowing);
+        let more = f.steps_needed(&h, 100, 1e-5).unwrap();
         assert!((more - 100.0 * 125f64.ln() / 2f64.ln()).abs() < 1e-9, "{more}");
-        // Too few windows, a rise among them, or already below: no forecast.
-        assert_eq!(f.steps_needed(&ratios[1..], 100, 1e-5), None);
-        assert_eq!(f.steps_needed(&[1e-2, 5e-3, 6e-3, 1e-3], 100, 1e-5), None);
-        assert_eq!(f.steps_needed(&ratios, 100, 2e-3), None);
+        // Too few windows, a rise among the ratios, already below the
+        // tolerance, or a mass that does not slow down: no forecast.
+        assert_eq!(f.steps_needed(&h[1..], 100, 1e-5), None);
+        assert_eq!(f.steps_needed(&at([2e-2, 1e-2, 5e-3, 6e-3, 1e-3], slowing), 100, 1e-5), None);
+        assert_eq!(f.steps_needed(&h, 100, 2e-3), None);
+        let steady = [0.0, 1.0, 2.0, 3.0, 4.0];
+        assert_eq!(f.steps_needed(&at([2e-2, 1e-2, 5e-3, 2.5e-3, 1.25e-3], steady), 100, 1e-5), None);
     }
 
     #[test]

@@ -21,12 +21,13 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use crate::drivers::srm::{run_srm_from, Reduction, SrmProgress, TrialStart};
+use crate::drivers::srm::{run_srm_with, Reduction, SrmProgress, TrialStart};
 use crate::drivers::Watch;
 use crate::error::Error;
 use crate::harness::registry;
 use crate::model::spec::Softening;
 use crate::scene::Scene;
+use crate::solver::Foresight;
 use crate::summary::EndState;
 
 /// What `cdem perf` measures on the slip-surface slope: phase 2 with both
@@ -39,9 +40,15 @@ pub struct FailureFigures {
     /// The same variants with every trial from the elastic state, run just
     /// before each warm-started one (side by side).
     pub srm_elastic: Vec<SrmFigure>,
+    /// The plastic-block strength reductions ([`PLASTIC_SRM_VARIANTS`]) as
+    /// `cdem srm` runs them.
+    pub plastic: Vec<SrmFigure>,
+    /// The same without the trials' foresight rule, run just before each.
+    pub plastic_plain: Vec<SrmFigure>,
 }
 
-/// [`phase2_figure`], and with `srm` every [`srm_figure`] of [`SRM_VARIANTS`].
+/// [`phase2_figure`], and with `srm` every [`srm_figure`] of [`SRM_VARIANTS`]
+/// and every [`plastic_srm_figure`] of [`PLASTIC_SRM_VARIANTS`].
 pub fn failure_figures(root: &Path, srm: bool, progress: &mut dyn FnMut(&str)) -> Result<FailureFigures, Error> {
     let phase2 = phase2_figure(root, progress)?;
     let (mut warm, mut elastic) = (Vec::new(), Vec::new());
@@ -49,8 +56,19 @@ pub fn failure_figures(root: &Path, srm: bool, progress: &mut dyn FnMut(&str)) -
         elastic.push(srm_figure(root, v, s, TrialStart::Elastic, progress)?);
         warm.push(srm_figure(root, v, s, TrialStart::Warm, progress)?);
     }
-    Ok(FailureFigures { phase2, srm: warm, srm_elastic: elastic })
+    let (mut plastic, mut plain) = (Vec::new(), Vec::new());
+    for &(v, case) in PLASTIC_SRM_VARIANTS.iter().filter(|_| srm) {
+        plain.push(plastic_srm_figure(root, v, case, false, progress)?);
+        plastic.push(plastic_srm_figure(root, v, case, true, progress)?);
+    }
+    Ok(FailureFigures { phase2, srm: warm, srm_elastic: elastic, plastic, plastic_plain: plain })
 }
+
+/// The plastic-block strength reductions timed beside the slip-surface
+/// slope's (issue 24 item 7: a homogeneous slope of a few hundred elements;
+/// issue 28 item 1: the 1000-element paper slope): `(variant, case)`.
+pub const PLASTIC_SRM_VARIANTS: [(&str, &registry::Case); 2] =
+    [("plastic-gl1-hex", &registry::PLASTIC_GL1_HEX), ("plastic-paper-slope", &registry::PLASTIC_PAPER_SLOPE)];
 
 /// Phase 2 of the slip-surface slope with one kind of mass.
 #[derive(Debug, Clone, Serialize)]
@@ -149,13 +167,18 @@ pub fn srm_scene(root: &Path, softening: Softening) -> Result<Scene, Error> {
     Ok(scene)
 }
 
-/// One `cdem srm` of the slip-surface slope.
+/// One timed `cdem srm`.
 #[derive(Debug, Clone, Serialize)]
 pub struct SrmFigure {
-    /// "brittle" or "ductile" ([`SRM_VARIANTS`]).
+    /// "brittle" or "ductile" ([`SRM_VARIANTS`]), or a plastic variant
+    /// ([`PLASTIC_SRM_VARIANTS`]).
     pub variant: String,
+    /// The scene, for the table.
+    pub case: String,
     /// Where its trials started.
     pub start: TrialStart,
+    /// Whether the trials' foresight rule was on (`cdem srm`'s default).
+    pub foresight: bool,
     pub fs: Option<f64>,
     /// `[lo, hi]` of the search.
     pub bracket_lo: Option<f64>,
@@ -189,16 +212,45 @@ pub fn srm_figure(
     progress: &mut dyn FnMut(&str),
 ) -> Result<SrmFigure, Error> {
     let scene = srm_scene(root, softening)?;
-    progress(&format!("slip-surface slope: cdem srm, {variant}, {start:?} start"));
-    let (r, _) = run_srm_from(&scene, start, &mut |p| {
+    time_srm(&scene, "slip-surface slope", variant, start, true, progress)
+}
+
+/// Runs `cdem srm`'s strength reduction of the plastic case `case` under
+/// `root` (no files written), with or without the trials' foresight rule.
+pub fn plastic_srm_figure(
+    root: &Path,
+    variant: &str,
+    case: &registry::Case,
+    foresight: bool,
+    progress: &mut dyn FnMut(&str),
+) -> Result<SrmFigure, Error> {
+    let scene = Scene::load(&root.join(case.input))?;
+    time_srm(&scene, case.name, variant, TrialStart::Warm, foresight, progress)
+}
+
+/// One timed strength reduction of `scene`.
+fn time_srm(
+    scene: &Scene,
+    case: &str,
+    variant: &str,
+    start: TrialStart,
+    foresight: bool,
+    progress: &mut dyn FnMut(&str),
+) -> Result<SrmFigure, Error> {
+    let rule = foresight.then_some(Foresight::TRIALS);
+    let what = format!("cdem srm, {variant}, {start:?} start, foresight {}", if foresight { "on" } else { "off" });
+    progress(&what);
+    let (r, _) = run_srm_with(scene, start, rule, &mut |p| {
         if let SrmProgress::TrialStart(f) = p {
-            progress(&format!("slip-surface slope: cdem srm, {variant}, {start:?} start, trial F = {f:.4}"));
+            progress(&format!("{what}, trial F = {f:.4}"));
         }
     })?;
     let steps: Vec<usize> = r.trials.iter().map(|t| t.steps).collect();
     Ok(SrmFigure {
         variant: variant.to_string(),
+        case: case.to_string(),
         start,
+        foresight,
         fs: r.fs,
         bracket_lo: r.bracket[0],
         bracket_hi: r.bracket[1],

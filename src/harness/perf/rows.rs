@@ -102,10 +102,11 @@ pub fn srm_perf_ids(variant: &str) -> [String; 4] {
 /// The wall-time goal of a timed strength reduction: the ductile one 15 s
 /// (issue 28, item 1), the brittle one 60 s ([`reg::GOAL_SRM_SECONDS`]).
 pub fn srm_goal_seconds(variant: &str) -> f64 {
-    if variant == "ductile" {
-        reg::GOAL_SRM_DUCTILE_SECONDS
-    } else {
-        reg::GOAL_SRM_SECONDS
+    match variant {
+        "ductile" => reg::GOAL_SRM_DUCTILE_SECONDS,
+        "plastic-gl1-hex" => reg::GOAL_PLASTIC_SRM_SECONDS,
+        "plastic-paper-slope" => reg::GOAL_PLASTIC_PAPER_SRM_SECONDS,
+        _ => reg::GOAL_SRM_SECONDS,
     }
 }
 
@@ -123,11 +124,19 @@ pub fn srm_perf_rows(f: &SrmFigure, e: &SrmFigure) -> Vec<Check> {
         _ => f64::INFINITY,
     };
     let cap = reg::THREEDEC_TRIAL_STEP_CAP;
-    let budget =
-        format!("{} trials, {} ran to their budget of {} steps (10 N_r)", f.trials, f.undecided, f.trial_budget);
+    let budget = format!(
+        "{} trials, {} Undecided (budget {} steps, 10 N_r{})",
+        f.trials,
+        f.undecided,
+        f.trial_budget,
+        if f.foresight { ", or foreseen" } else { "" }
+    );
+    // What `e` is: the same search from the elastic state, or without the
+    // foresight rule.
+    let other = if e.foresight != f.foresight { "without the foresight rule" } else { "from the elastic state" };
     let rows = vec![
         row(&wall).value(f.seconds, srm_goal_seconds(&f.variant), f.seconds).with_note(format!(
-            "FS {}; {budget}; from the elastic state in the same run {:.1} s ({:.2}x), {:.0} steps per trial",
+            "FS {}; {budget}; {other} in the same run {:.1} s ({:.2}x), {:.0} steps per trial",
             f.fs.map_or("none (no bracket)".to_string(), |fs| format!("{fs:.3}")),
             e.seconds,
             e.seconds / f.seconds,
@@ -143,7 +152,7 @@ pub fn srm_perf_rows(f: &SrmFigure, e: &SrmFigure) -> Vec<Check> {
             if (f.trial_budget as f64) < cap { "below" } else { "not below" }
         )),
         row(&change).value(fs_change, width, f.seconds + e.seconds).with_note(format!(
-            "FS warm / from the elastic state {} / {}, bracket [{}, {}] / [{}, {}], {} / {} trials",
+            "FS as cdem srm runs it / {other} {} / {}, bracket [{}, {}] / [{}, {}], {} / {} trials",
             fmt(f.fs),
             fmt(e.fs),
             fmt(f.bracket_lo),
@@ -164,11 +173,9 @@ pub fn srm_perf_rows(f: &SrmFigure, e: &SrmFigure) -> Vec<Check> {
 /// (they take 10-90 s each: `cdem perf` measures them, the tests and
 /// `cdem reproduce` do not).
 pub fn srm_perf_skipped(reason: &str) -> Vec<Check> {
-    crate::harness::perf::failure::SRM_VARIANTS
-        .iter()
-        .flat_map(|(variant, _)| srm_perf_ids(variant))
-        .map(|id| row(&id).skipped(reason))
-        .collect()
+    use crate::harness::perf::failure::{PLASTIC_SRM_VARIANTS, SRM_VARIANTS};
+    let variants = SRM_VARIANTS.iter().map(|v| v.0).chain(PLASTIC_SRM_VARIANTS.iter().map(|v| v.0));
+    variants.flat_map(srm_perf_ids).map(|id| row(&id).skipped(reason)).collect()
 }
 
 /// The ids of the timed ensemble rows ([`ensemble_perf_rows`]).

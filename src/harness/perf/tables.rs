@@ -117,17 +117,20 @@ impl FailureFigures {
             reg::PHASE2_STEPS_BASELINE
         );
         let cap = reg::THREEDEC_TRIAL_STEP_CAP;
-        for f in self.srm_elastic.iter().chain(&self.srm) {
+        let plastic = self.plastic_plain.iter().chain(&self.plastic);
+        for f in self.srm_elastic.iter().chain(&self.srm).chain(plastic) {
             let fs = f.fs.map_or("no bracket".to_string(), |fs| format!("FS {fs:.3}"));
             let bracket = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.4}"));
             let _ = writeln!(
                 md,
-                "| cdem srm, slip-surface slope, {}, trials from the {} state | {:.1} s, bracket [{}, {}], {fs}, {} trials; steps per trial mean {:.0} / max {} \
-                 = {:.3} / {:.3} of 3DEC's cap; {} trials ran to the budget of {} steps; a trial {:.3} s of which \
+                "| cdem srm, {}, {}, trials from the {} state, foresight {} | {:.1} s, bracket [{}, {}], {fs}, {} trials; steps per trial mean {:.0} / max {} \
+                 = {:.3} / {:.3} of 3DEC's cap; {} trials Undecided (budget {} steps); a trial {:.3} s of which \
                  setup {:.1e} s, the phase-2 plan built once in {:.1e} s (before: once per trial, {:.1e} s in all) \
                  | <= {} s; cap {} steps |",
+                f.case,
                 f.variant,
                 if f.start == crate::drivers::srm::TrialStart::Warm { "last stable" } else { "elastic" },
+                if f.foresight { "on" } else { "off" },
                 f.seconds,
                 bracket(f.bracket_lo),
                 bracket(f.bracket_hi),
@@ -277,7 +280,8 @@ pub fn perf_checks(head: &Headline, failure: &FailureFigures, ensemble: Option<&
     if failure.srm.is_empty() {
         rows.extend(crate::harness::perf::rows::srm_perf_skipped("not run: cdem perf --no-srm"));
     }
-    for (f, e) in failure.srm.iter().zip(&failure.srm_elastic) {
+    for (f, e) in failure.srm.iter().zip(&failure.srm_elastic).chain(failure.plastic.iter().zip(&failure.plastic_plain))
+    {
         rows.extend(crate::harness::perf::rows::srm_perf_rows(f, e));
     }
     match ensemble {
@@ -441,7 +445,9 @@ pub fn write_report(
     scaling: &[ScalingRow],
 ) -> Result<String, Error> {
     write_csv(&out.join("phase2.csv"), &[&failure.phase2.block, &failure.phase2.lumped])?;
-    write_csv(&out.join("srm.csv"), &[failure.srm_elastic.clone(), failure.srm.clone()].concat())?;
+    let srm =
+        [failure.srm_elastic.clone(), failure.srm.clone(), failure.plastic_plain.clone(), failure.plastic.clone()];
+    write_csv(&out.join("srm.csv"), &srm.concat())?;
     if let Some(e) = ensemble {
         write_csv(&out.join("ensemble.csv"), &e.csv_rows())?;
     }

@@ -66,6 +66,8 @@ pub const DECLARED: &[(&str, &[&str])] = &[
     ("perf/lem/", &["verification/lem/paper-slope-explicit.toml", "verification/lem/acads-1a.toml", "references/pyslope.json"]),
     ("perf/phase2/", &["verification/cases/slope-slip/slope-slip.toml"]),
     ("perf/srm/", &["verification/cases/slope-slip/slope-slip.toml"]),
+    ("perf/srm/plastic-gl1-hex/", &["verification/plastic/griffiths-lane-1/gl1-hex.toml"]),
+    ("perf/srm/plastic-paper-slope/", &["verification/plastic/paper-slope/paper-slope.toml"]),
     ("perf/ensemble/", &["verification/ensemble/paper-slope-slip.toml", "verification/ensemble/paper-slope-slip-srm.toml"]),
     ("lem/water-fk-ru/", &["verification/lem/fredlund-krahn-1977-ru.toml"]),
     ("lem/water-arai-tagyo/", &["verification/lem/arai-tagyo-1985-water.toml"]),
