@@ -4,7 +4,8 @@
 //! and the kinetic energy. The measurement behind the plastic-flow rule of
 //! docs/method.md section 2.9b.
 //!
-//! `cargo run --release --example trial_probe -- SCENE F1 F2 ...`
+//! `cargo run --release --example trial_probe -- SCENE F1 F2 ...` (with
+//! `PROBE_WORST=1`: also the node with the largest unbalanced force).
 
 use std::ops::ControlFlow;
 
@@ -40,9 +41,36 @@ impl Watch for Trace<'_> {
                 view.kinetic
             );
             self.last = mean;
+            if std::env::var_os("PROBE_WORST").is_some() {
+                // The node with the largest unbalanced force: where the
+                // ratio comes from.
+                let st = view.state;
+                let worst = (0..self.model.n_nodes())
+                    .max_by(|&a, &b| unbalanced(self.model, st, a).total_cmp(&unbalanced(self.model, st, b)))
+                    .unwrap_or(0);
+                let v: f64 = (0..3).map(|d| st.v[3 * worst + d].powi(2)).sum::<f64>().sqrt();
+                let x = self.model.x0[worst];
+                println!(
+                    "    worst node {worst} at ({:.2}, {:.2}, {:.2}): |f| {:.3e} N, |v| {:.3e}",
+                    x[0],
+                    x[1],
+                    x[2],
+                    unbalanced(self.model, st, worst),
+                    v
+                );
+            }
         }
         ControlFlow::Continue(())
     }
+}
+
+/// `|f_ext - f_int|` of node `i` over its free components.
+fn unbalanced(model: &cdem::model::Model, st: &cdem::solver::State, i: usize) -> f64 {
+    (0..3)
+        .filter(|&d| !model.fixed[3 * i + d])
+        .map(|d| (model.f_ext[3 * i + d] - st.f_int[3 * i + d]).powi(2))
+        .sum::<f64>()
+        .sqrt()
 }
 
 fn main() {

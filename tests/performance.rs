@@ -72,7 +72,7 @@ fn headline_figures_for_the_report() {
 /// lumped masses in one run, as reported rows (the step counts are
 /// deterministic; the goal of at most 5,000 with block masses is asserted by
 /// tests/cli.rs on `cdem run`). Both must decide, else the rows mean nothing.
-/// The strength reductions of the same slope take 10-90 s each: `cdem perf`
+/// The timed strength reductions take 10 s to 4 min each: `cdem perf`
 /// measures them, here their rows are skipped.
 #[test]
 fn phase2_and_srm_figures_for_the_report() {
@@ -80,7 +80,7 @@ fn phase2_and_srm_figures_for_the_report() {
     assert!(f.block.decided() && f.lumped.decided(), "{f:?}");
     let mut rows = cdem::harness::perf::rows::phase2_rows(&f);
     rows.extend(cdem::harness::perf::rows::srm_perf_skipped(
-        "two strength reductions of 10-90 s each, measured by cargo run --release -- perf (references/performance.md)",
+        "four strength reductions of 10 s to 4 min each, twice, measured by cargo run --release -- perf (references/performance.md)",
     ));
     for c in &rows {
         println!("{}: {:.3} against {} ({:?}) {}", c.id, c.ours, c.reference, c.status(), c.note);

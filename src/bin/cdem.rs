@@ -105,8 +105,10 @@ enum Command {
         /// Skip the damping table (about 3 minutes).
         #[arg(long)]
         no_damping: bool,
-        /// Skip `cdem srm` on the slip-surface slope, brittle and ductile (about 12 s and 28 s, references/performance.md);
-        /// phase 2 to a decision (node-block against lumped masses, a few seconds) always runs.
+        /// Skip the timed strength reductions: the slip-surface slope, brittle and ductile (about 12 s and 28 s), and
+        /// the plastic blocks of Griffiths & Lane and the paper slope with and without the foresight rule (about 12
+        /// min, references/performance.md); phase 2 to a decision (node-block against lumped masses, a few seconds)
+        /// always runs.
         #[arg(long)]
         no_srm: bool,
         /// Skip the timed ensembles of the slip-surface slope (about 2 minutes): members per hour

@@ -956,7 +956,7 @@ use SpecKind::{Asserted, Compared, Reported};
 
 /// Why `meshes/regenerated` may be skipped (never under `CI=true`: it is asserted).
 const GMSH_SKIP: &str = "gmsh is not on PATH (outside CI)";
-/// Why the timed strength reductions may be skipped: 10-90 s each, measured by `cdem perf`.
+/// Why the timed strength reductions may be skipped: 10 s to 4 min each, measured by `cdem perf`.
 const SRM_PERF_SKIP: &str = "timed strength reductions, measured by cdem perf (references/performance.md)";
 /// Why the timed ensembles may be skipped: about 2 min with the `cdem` binary, measured by `cdem perf`.
 const ENSEMBLE_PERF_SKIP: &str = "timed ensembles, measured by cdem perf (references/performance.md)";

@@ -117,7 +117,7 @@ fn not_in_reproduce() -> Vec<Check> {
     rows
 }
 const SRM_PERF_ONLY: &str =
-    "two strength reductions of 10-90 s each, measured by cargo run --release -- perf (references/performance.md)";
+    "four strength reductions of 10 s to 4 min each, twice, measured by cargo run --release -- perf (references/performance.md)";
 const ENSEMBLE_PERF_ONLY: &str = "timed ensembles (about 2 min, shard processes of the cdem binary), measured by \
                                   cargo run --release -- perf (references/performance.md)";
 

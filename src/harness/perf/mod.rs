@@ -16,8 +16,9 @@
 //! - [`pyslope`]: the LEM grid search against pySlope, timed in the same run
 //!   or from its recorded time;
 //! - [`headline`](mod@headline): the four figures on the paper slope;
-//! - [`failure`]: phase 2 to a decision (node-block against lumped masses)
-//!   and `cdem srm` on the slip-surface slope;
+//! - [`failure`]: phase 2 to a decision (node-block against lumped masses),
+//!   `cdem srm` on the slip-surface slope, and the plastic-block `cdem srm` of
+//!   Griffiths & Lane and the paper slope with and without the foresight rule;
 //! - [`ensemble`](mod@ensemble): members per hour of ensembles of the
 //!   slip-surface slope (with and without strength reduction) and the
 //!   speed-up of two shard processes;
@@ -72,8 +73,10 @@ pub struct PerfOptions {
     /// Run the damping table (about 3 minutes: local damping is slow).
     pub damping: bool,
     /// Run `cdem srm` on the slip-surface slope, brittle and ductile
-    /// ([`failure::SRM_VARIANTS`]; about 15 s and 90 s). Phase 2 to a
-    /// decision (a few seconds) always runs.
+    /// ([`failure::SRM_VARIANTS`]; about 15 s and 90 s), and the plastic
+    /// blocks' ([`failure::PLASTIC_SRM_VARIANTS`], with and without the
+    /// foresight rule: about 1 + 3 min and 4 + 4 min). Phase 2 to a decision
+    /// (a few seconds) always runs.
     pub srm: bool,
     /// The `cdem` binary that runs the ensemble's shard processes (`cdem
     /// perf` passes its own): with it, the timed ensembles of the

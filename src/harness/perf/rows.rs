@@ -170,7 +170,7 @@ pub fn srm_perf_rows(f: &SrmFigure, e: &SrmFigure) -> Vec<Check> {
 }
 
 /// The rows of the timed strength reductions as skipped, with the reason
-/// (they take 10-90 s each: `cdem perf` measures them, the tests and
+/// (they take 10 s to 4 min each: `cdem perf` measures them, the tests and
 /// `cdem reproduce` do not).
 pub fn srm_perf_skipped(reason: &str) -> Vec<Check> {
     use crate::harness::perf::failure::{PLASTIC_SRM_VARIANTS, SRM_VARIANTS};
