@@ -2,7 +2,7 @@
 
 use cdem::harness::registry as reg;
 use cdem::harness::report::record;
-use cdem::harness::suite::plastic::{column_rows, element_limit_row, gl1_hex_row, prandtl_row};
+use cdem::harness::suite::plastic::{column_rows, element_limit_row, gl1_hex_row, gl1_prism_rows, prandtl_row};
 use cdem::physics::material::RockStrength;
 
 #[test]
@@ -79,8 +79,19 @@ fn griffiths_and_lanes_slope_with_plastic_blocks_finds_its_factor_of_safety() {
         run.row.reference,
         reg::GL1_FE_FS
     );
-    record("plasticity_slope", std::slice::from_ref(&run.row));
     assert!(run.row.passed(), "{:?}", run.row.defect);
+    // The same slope on unstructured prisms: reported rows (issue 24's mesh
+    // independence, not met: references/plastic.md), each with a bracket.
+    let (prism, spread) = gl1_prism_rows(&run).expect("gl1 prisms");
+    for t in &prism.result.trials {
+        println!("prisms F = {:.4}: {:?} after {} steps, {:.3e} m", t.factor, t.outcome, t.steps, t.max_displacement);
+    }
+    println!(
+        "{}: FS {:.4} {:?}; {}: {:.4} ({})",
+        prism.row.id, prism.row.ours, prism.result.bracket, spread.id, spread.ours, spread.note
+    );
+    assert!(prism.row.defect.is_none() && spread.defect.is_none(), "{:?}", prism.row.defect);
+    record("plasticity_slope", &[run.row, prism.row, spread]);
 }
 
 /// Elastic, the plastic element's forces (deviatoric per tetrahedron plus

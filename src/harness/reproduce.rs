@@ -151,7 +151,9 @@ fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Err
     progress("plastic blocks: Prandtl's strip footing (about 2 min)");
     rep.checks.push(suite::plastic::prandtl_row()?.0);
     progress("plastic blocks: Griffiths & Lane's slope by strength reduction (about 3 min)");
-    rep.checks.push(suite::plastic::gl1_hex_row()?.row);
+    let gl1 = suite::plastic::gl1_hex_row()?;
+    let (gl1_prism, gl1_spread) = suite::plastic::gl1_prism_rows(&gl1)?;
+    rep.checks.extend([gl1.row, gl1_prism.row, gl1_spread]);
     joint_sets(rep, progress)?;
     water(rep, progress)?;
     progress("analytic ensemble");
