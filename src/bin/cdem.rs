@@ -90,7 +90,7 @@ enum Command {
     /// and `cdem srm` on the slip-surface slope, ensembles of it, the damping table, cost
     /// against size (gmsh for refine 7, 10) and phase 2 and `cdem srm` against size (gmsh):
     /// DIR/perf.md (with the validation rows perf/*) and CSVs. Run from the repository root;
-    /// about 35 to 55 minutes with the defaults.
+    /// about 45 to 65 minutes with the defaults (the plastic strength reductions about 10 of them).
     Perf {
         #[arg(long, default_value = "perf")]
         out: PathBuf,

@@ -89,7 +89,10 @@ fn measure(
     progress: &mut dyn FnMut(&str),
 ) -> Result<TrialScalingRow, Error> {
     let mut s = scene.clone();
-    s.mesh.file = mesh;
+    // The scene resolves its mesh against its own folder: give it the
+    // mesh's absolute path (a path relative to the working directory would
+    // be taken from the scene's folder).
+    s.mesh.file = mesh.canonicalize().map_err(|e| Error::io(&mesh, e))?;
     s.output.vtk = false;
     progress(&format!("phase 2 and srm against size: {case} at {resolution}"));
     let t = Instant::now();
