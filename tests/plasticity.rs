@@ -158,3 +158,125 @@ fn the_elastic_plastic_element_is_its_mixed_stiffness() {
         }
     }
 }
+
+/// The elastic screen's bound (docs/method.md, 2.9b): within its radius no
+/// tetrahedron of the cell can yield, and its fast path `K_e u_e - f_p` is the
+/// full pass's force, also after the cell has yielded and unloaded.
+#[test]
+fn the_elastic_screen_lets_no_tetrahedron_yield_inside_its_radius() {
+    use cdem::mesh::shape::CellKind;
+    use cdem::physics::element::{element_operators, pack_symmetric};
+    use cdem::physics::material::{Material, MaterialLaw, YoungPoisson};
+    use cdem::physics::mohr_coulomb::{MohrCoulomb, Yield};
+    use cdem::physics::plastic::{
+        plastic_element_force, plastic_operator, screen_radius, stress_sensitivity, Screen, TetPlastic, Volumetric,
+        MAX_TETS,
+    };
+    use cdem::physics::tet_operator::TetTopology;
+    let strength = RockStrength { cohesion: 2e4, tan_phi: 30f64.to_radians().tan(), tensile: 1e4, tan_psi: 0.0 };
+    let material = Material {
+        lame: YoungPoisson { young: 1e9, poisson: 0.3 }.into(),
+        density: 2000.0,
+        law: MaterialLaw::MohrCoulomb(strength),
+    };
+    let corners = vec![
+        [0., 0., 0.],
+        [1.1, 0., 0.1],
+        [1., 1., 0.],
+        [0., 0.9, 0.],
+        [0., 0., 1.],
+        [1., 0.1, 1.2],
+        [1., 1., 1.],
+        [0.1, 1., 1.],
+    ];
+    let kind = CellKind::Hex8;
+    let ops = element_operators(kind, &corners, &material).unwrap();
+    let k = pack_symmetric(&ops.k, 8);
+    let (topo, tets) = (TetTopology::of(kind), plastic_operator(kind, &corners));
+    let surface = MohrCoulomb::of(&strength);
+    let g = stress_sensitivity(&topo, &tets, material.lame);
+    let nodes: Vec<u32> = (0..8).collect();
+    let pass = |u: &[f64], hist: &mut [TetPlastic; MAX_TETS]| {
+        let mut f = vec![0.0; 24];
+        plastic_element_force(
+            &topo,
+            &tets,
+            &ops.grad,
+            material.lame,
+            &surface,
+            &nodes,
+            u,
+            Volumetric::Cell,
+            0.0,
+            hist,
+            &mut f,
+        );
+        f
+    };
+    let mut seed = 5u64;
+    let mut next = move || {
+        seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+    };
+    // A direction `v` less its mean over the corners, of unit length.
+    let mut direction = || {
+        let mut v: Vec<f64> = (0..24).map(|_| next()).collect();
+        for i in 0..3 {
+            let m = (0..8).map(|c| v[3 * c + i]).sum::<f64>() / 8.0;
+            (0..8).for_each(|c| v[3 * c + i] -= m);
+        }
+        let n = v.iter().map(|x| x * x).sum::<f64>().sqrt();
+        v.iter().map(|x| x / n).collect::<Vec<f64>>()
+    };
+    // Two histories: never yielded, and yielded under a large shear then
+    // brought back (plastic strain, every tetrahedron elastic again).
+    let base: Vec<f64> = (0..24).map(|i| 2e-6 * ((i as f64) * 0.77).sin()).collect();
+    let fresh = [TetPlastic::default(); MAX_TETS];
+    let mut yielded = [TetPlastic::default(); MAX_TETS];
+    let shear: Vec<f64> = (0..24).map(|i| if i % 3 == 0 { 1e-3 * corners[i / 3][2] } else { 0.0 }).collect();
+    pass(&shear, &mut yielded);
+    assert!(yielded.iter().any(|h| h.ever), "the shear yields the cell");
+    let mut loosest: f64 = 0.0;
+    // The yielded cell taken back along its shear by about half its
+    // elastic range: inside the surface again.
+    let unloaded: Vec<f64> = (0..24).map(|i| 0.975 * shear[i] + base[i]).collect();
+    for (hist0, base) in [(fresh, base.clone()), (yielded, unloaded)] {
+        let mut hist = hist0;
+        let f0 = pass(&base, &mut hist);
+        assert!(hist.iter().all(|h| h.now == Yield::Elastic), "the base state is elastic");
+        let r = screen_radius(&topo, &tets, material.lame, &surface, &g, &nodes, &base, 0.0, &hist);
+        assert!(r > 0.0, "an elastic cell has a radius");
+        let mut screen = Screen::default();
+        screen.arm(&k, &nodes, &base, &f0, r);
+        for trial in 0..300 {
+            let v = direction();
+            // A translation added: it strains nothing and must not matter.
+            let u: Vec<f64> = (0..24).map(|i| base[i] + 0.999 * r * v[i] + 1e-2 * [1.0, -2.0, 0.5][i % 3]).collect();
+            assert!(screen.holds(&nodes, &u), "trial {trial}: inside the radius");
+            let mut h = hist;
+            let full = pass(&u, &mut h);
+            assert!(h.iter().all(|t| t.now == Yield::Elastic), "trial {trial}: a tetrahedron yields inside the radius");
+            let mut fast = vec![0.0; 24];
+            screen.force(&k, &nodes, &u, &mut fast);
+            let scale = full.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+            for (a, b) in fast.iter().zip(&full) {
+                assert!((a - b).abs() <= 1e-9 * scale, "trial {trial}: {fast:?} vs {full:?}");
+            }
+            // How far out along this direction the first tetrahedron yields.
+            let mut s = 1.0;
+            while s < 1e4 {
+                let mut h = hist;
+                pass(&(0..24).map(|i| base[i] + s * r * v[i]).collect::<Vec<f64>>(), &mut h);
+                if h.iter().any(|t| t.now != Yield::Elastic) {
+                    break;
+                }
+                s *= 1.25;
+            }
+            loosest = loosest.max(s);
+        }
+        let d = direction();
+        let outside: Vec<f64> = (0..24).map(|i| base[i] + 1.001 * r * d[i]).collect();
+        assert!(!screen.holds(&nodes, &outside), "outside the radius the screen does not hold");
+    }
+    println!("radius bound: the first yield along random directions comes at up to {loosest:.0} radii");
+}

@@ -81,7 +81,8 @@ pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
         for (k, &id) in ids.iter().enumerate() {
             mass[id as usize] += op.mass[k];
         }
-        plastic.push(cell.kind, &corners, !materials[mat as usize].law.condenses());
+        let m = &materials[mat as usize];
+        plastic.push(cell.kind, &corners, (!m.law.condenses()).then_some(m.lame));
         el.kind.push(cell.kind);
         el.nodes.extend_from_slice(&ids);
         el.offset.push(el.nodes.len());

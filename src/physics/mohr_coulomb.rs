@@ -127,6 +127,18 @@ impl MohrCoulomb {
         }
     }
 
+    /// How far inside the surface `sigma` (Voigt, tension positive) is, in
+    /// stress (Pa): `-max(m . s - k)` over the main plane and the cut-off on
+    /// `s1`, which bound the other four planes. Negative outside. A change
+    /// `ds` of the stress changes the main plane's value by at most
+    /// `(1 + sin phi) + (1 - sin phi) = 2` times its spectral norm (Weyl: no
+    /// principal value moves more than that norm) and the cut-off's by at
+    /// most once: `sigma + ds` is inside while `2 |ds| < margin`.
+    pub fn margin(&self, sigma: &[f64; 6]) -> f64 {
+        let s = principal_values(sigma);
+        -self.excess(0, s).max(s[0] - self.tensile)
+    }
+
     /// A cheap sufficient test that `sigma` (Voigt, tension positive) is
     /// inside the surface, from its invariants: with `p` the mean stress and
     /// `q = sqrt(J2)`, `s1 - s3 <= 2 q`, `|s2 - p| <= q / sqrt(3)` and
@@ -166,6 +178,38 @@ impl MohrCoulomb {
         admissible.then_some(r)
     }
 
+    /// The return onto the main plane and shear plane `q` (1: the edge
+    /// `s2 = s3`, 2: the edge `s1 = s2`) together, the active set `[0, q]`,
+    /// in closed form (Cramer's rule on the 2 x 2 system of the module
+    /// documentation): None if a multiplier is negative or the result
+    /// violates another plane. Equal to `return_to(.., &[0, q], ..)` to
+    /// rounding.
+    fn edge_return(&self, lame: Lame, s: [f64; 3], q: usize, tol: f64) -> Option<[f64; 3]> {
+        let Lame { lambda, mu } = lame;
+        let (m0, _, n0) = self.plane(0);
+        let (mq, _, nq) = self.plane(q);
+        // D n = lambda tr(n) + 2 mu n.
+        let dn = |n: [f64; 3]| {
+            let t = lambda * (n[0] + n[1] + n[2]);
+            [t + 2.0 * mu * n[0], t + 2.0 * mu * n[1], t + 2.0 * mu * n[2]]
+        };
+        let (d0, dq) = (dn(n0), dn(nq));
+        let (a00, a01, a10, a11) = (dot3(m0, d0), dot3(m0, dq), dot3(mq, d0), dot3(mq, dq));
+        let (r0, r1) = (self.excess(0, s), self.excess(q, s));
+        let det = a00 * a11 - a01 * a10;
+        if !(det.abs() > 1e-12 * a00.abs().max(a11.abs()).powi(2)) {
+            return None;
+        }
+        let g = [(r0 * a11 - a01 * r1) / det, (a00 * r1 - a10 * r0) / det];
+        let largest = g[0].abs().max(g[1].abs());
+        if g.iter().any(|&x| x < -1e-12 * largest) {
+            return None;
+        }
+        let r = [0, 1, 2].map(|i| s[i] - g[0] * d0[i] - g[1] * dq[i]);
+        let admissible = (1..PLANES).filter(|&p| p != q).all(|p| self.excess(p, r) <= tol);
+        admissible.then_some(r)
+    }
+
     /// The return mapping: the stress (Voigt xx yy zz yz xz xy, Pa, tension
     /// positive) on or inside the surface for the elastic trial stress
     /// `trial`, and what it did. See the module documentation.
@@ -188,6 +232,15 @@ impl MohrCoulomb {
         if main > tol {
             if let Some(r) = self.main_plane_return(lame, values, main, tol) {
                 return (spectral_update(&trial, values, r), Yield::Shear);
+            }
+        }
+        // Below the cut-off the general search's sets [0] and [3] decline,
+        // and it tries the two edges next: in closed form here.
+        if values[0] <= self.tensile {
+            for q in [1, 2] {
+                if let Some(r) = self.edge_return(lame, values, q, tol) {
+                    return (spectral_update(&trial, values, r), Yield::Shear);
+                }
             }
         }
         let d = principal_elasticity(lame);
@@ -638,5 +691,43 @@ mod tests {
             answered += usize::from(fast.is_some());
         }
         assert!(answered > 100, "the sweep reaches the main plane ({answered})");
+    }
+
+    #[test]
+    fn the_closed_form_edge_returns_are_the_general_ones() {
+        // Wherever the general search's set [0, q] answers, the closed form
+        // gives the same stress to rounding, and declines where it declines.
+        let l = lame();
+        let mc = rock(8e4, 25.0, 2e4, 5.0);
+        let d = principal_elasticity(l);
+        let planes = [0, 1, 2, 3, 4, 5].map(|p| {
+            let (m, k, n) = mc.plane(p);
+            (m, k, mat_vec(&d, n))
+        });
+        let (mut seed, mut answered) = (11u64, [0; 3]);
+        let mut next = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+        };
+        for _ in 0..4000 {
+            let mut v = [0; 3].map(|_| 1e6 * next());
+            v.sort_by(|a, b| b.total_cmp(a));
+            let tol = 1e-12 * 1e6;
+            for q in [1, 2] {
+                let general = {
+                    let ps = planes.map(|(m, k, dn)| Plane { m, k, dn, excess: dot3(m, v) - k });
+                    return_to(&ps, &[0, q], v, tol).map(|(r, _)| r)
+                };
+                let fast = mc.edge_return(l, v, q, tol);
+                assert_eq!(fast.is_some(), general.is_some(), "{v:?} q {q}");
+                if let (Some(a), Some(b)) = (fast, general) {
+                    for i in 0..3 {
+                        assert!((a[i] - b[i]).abs() <= 1e-9 * 1e6, "{v:?} q {q}: {a:?} {b:?}");
+                    }
+                    answered[q] += 1;
+                }
+            }
+        }
+        assert!(answered[1] > 50 && answered[2] > 50, "the sweep reaches both edges ({answered:?})");
     }
 }

@@ -211,6 +211,150 @@ pub fn plastic_element_force(
     CellStep { volumetric: e, pressure: pressure / volume }
 }
 
+/// The elastic screen of a hexahedral plastic cell (one pressure per cell,
+/// [`Volumetric::Cell`]): while none of its tetrahedra yields, its force is
+/// affine in its corner displacements, `f_e = K_e u_e - f_p` (`K_e` the
+/// mixed stiffness of phase 1, `f_p` the force of the plastic strain it
+/// already has), and the return mappings can be skipped. When a full pass
+/// finds every tetrahedron elastic, [`Screen::arm`] records the corner
+/// displacements `u_c` and a radius `r = min_t margin_t / (2 G_t)`:
+/// `margin_t` the distance of tetrahedron `t`'s stress to the surface
+/// ([`MohrCoulomb::margin`]), `G_t` its largest stress change per unit
+/// corner motion ([`stress_sensitivity`]). No tetrahedron can reach the
+/// surface while the corners' motion since then, less its mean (a
+/// translation strains nothing), stays within `r`
+/// ([`Screen::holds`]): the fast path then gives the full pass's force,
+/// to rounding. A strength reduction disarms every screen.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Screen {
+    /// Corner displacements at the last check (m).
+    pub u_check: [f64; 24],
+    /// `f_p = K_e u_e - f_e` at the last check (N).
+    pub offset: [f64; 24],
+    /// `r^2` (m^2); 0: disarmed, the next step makes a full pass.
+    pub radius2: f64,
+}
+
+impl Default for Screen {
+    fn default() -> Self {
+        Self { u_check: [0.0; 24], offset: [0.0; 24], radius2: 0.0 }
+    }
+}
+
+impl Screen {
+    /// Whether the corner motion since the check, less its mean, is inside
+    /// the radius.
+    #[inline]
+    pub fn holds(&self, nodes: &[u32], u: &[f64]) -> bool {
+        if self.radius2 <= 0.0 {
+            return false;
+        }
+        let n = nodes.len();
+        let mut du = [[0.0; 3]; 8];
+        let mut mean = [0.0; 3];
+        for (c, &node) in nodes.iter().enumerate() {
+            let k = 3 * node as usize;
+            for i in 0..3 {
+                du[c][i] = u[k + i] - self.u_check[3 * c + i];
+                mean[i] += du[c][i];
+            }
+        }
+        let mean = mean.map(|m| m / n as f64);
+        let mut r2 = 0.0;
+        for d in &du[..n] {
+            for i in 0..3 {
+                r2 += (d[i] - mean[i]) * (d[i] - mean[i]);
+            }
+        }
+        r2 < self.radius2
+    }
+
+    /// Arms the screen after a full pass that gave `f_e` and left every
+    /// tetrahedron elastic: `radius` from the cell's margin and
+    /// sensitivity, `f_p = K_e u_e - f_e` from its mixed stiffness `k`.
+    pub fn arm(&mut self, k: &[f64], nodes: &[u32], u: &[f64], f_e: &[f64], radius: f64) {
+        let n = nodes.len();
+        for (c, &node) in nodes.iter().enumerate() {
+            let b = 3 * node as usize;
+            self.u_check[3 * c..3 * c + 3].copy_from_slice(&u[b..b + 3]);
+        }
+        let mut ku = [0.0; 24];
+        super::element::element_force(k, nodes, u, &mut ku[..3 * n]);
+        for i in 0..3 * n {
+            self.offset[i] = ku[i] - f_e[i];
+        }
+        self.radius2 = radius * radius;
+    }
+
+    /// The fast path: `f_e = K_e u_e - f_p`.
+    #[inline]
+    pub fn force(&self, k: &[f64], nodes: &[u32], u: &[f64], f_e: &mut [f64]) {
+        super::element::element_force(k, nodes, u, f_e);
+        for (f, p) in f_e.iter_mut().zip(&self.offset) {
+            *f -= p;
+        }
+    }
+}
+
+/// `G_t` of each tetrahedron of a [`Volumetric::Cell`] cell (Pa/m): the
+/// norm of the linear map from the cell's corner displacements to the
+/// tetrahedron's stress, the stress measured by its tensor (Frobenius) norm,
+/// which bounds its spectral norm: `|d sigma_t| <= G_t |d u|`. The map is
+/// probed with the unit displacements; `G_t` is the square root of the
+/// largest eigenvalue of `M_t M_t^T` (6 x 6, the shear rows scaled by
+/// `sqrt 2`).
+pub fn stress_sensitivity(topo: &TetTopology, tets: &[TetB], lame: Lame) -> Vec<f64> {
+    let n = topo.n_corners;
+    let nodes: Vec<u32> = (0..n as u32).collect();
+    let mut mmt = vec![nalgebra::Matrix6::<f64>::zeros(); tets.len()];
+    for j in 0..3 * n {
+        let mut u = vec![0.0; 3 * n];
+        u[j] = 1.0;
+        let (eps, e) = tet_strains(topo, tets, &point_displacements(topo, &nodes, &u));
+        for (a, eps) in mmt.iter_mut().zip(&eps) {
+            let s = lame.stress_voigt(mixed(*eps, e));
+            let r2 = std::f64::consts::SQRT_2;
+            let col = nalgebra::Vector6::new(s[0], s[1], s[2], r2 * s[3], r2 * s[4], r2 * s[5]);
+            *a += col * col.transpose();
+        }
+    }
+    mmt.into_iter().map(|a| a.symmetric_eigenvalues().max().max(0.0).sqrt()).collect()
+}
+
+/// The screen's radius of a [`Volumetric::Cell`] cell whose tetrahedra
+/// are all elastic now: `min_t margin_t / (2 G_t)` (m), the margins of the
+/// effective stresses (`pore` as in [`plastic_element_force`]); 0 if a
+/// tetrahedron is on or outside the surface.
+#[allow(clippy::too_many_arguments)]
+pub fn screen_radius(
+    topo: &TetTopology,
+    tets: &[TetB],
+    lame: Lame,
+    surface: &MohrCoulomb,
+    sensitivity: &[f64],
+    nodes: &[u32],
+    u: &[f64],
+    pore: f64,
+    hist: &[TetPlastic],
+) -> f64 {
+    let (eps, e) = tet_strains(topo, tets, &point_displacements(topo, nodes, u));
+    let mut radius = f64::INFINITY;
+    for ((eps, h), &g) in eps[..tets.len()].iter().zip(hist).zip(sensitivity) {
+        let strain = mixed(*eps, e);
+        let sigma = lame.stress_voigt([0, 1, 2, 3, 4, 5].map(|i| strain[i] - h.eps_p[i]));
+        let margin = surface.margin(&shift_normal(sigma, pore));
+        if !(margin > 0.0) {
+            return 0.0;
+        }
+        radius = radius.min(margin / (2.0 * g));
+    }
+    if radius.is_finite() {
+        radius
+    } else {
+        0.0
+    }
+}
+
 /// `sigma + p I` (Voigt).
 fn shift_normal(sigma: [f64; 6], p: f64) -> [f64; 6] {
     [sigma[0] + p, sigma[1] + p, sigma[2] + p, sigma[3], sigma[4], sigma[5]]
@@ -297,6 +441,8 @@ pub struct RockState {
     /// its nodally averaged cells (scratch of each step).
     pub vertex_strain: Vec<f64>,
     pub vertex_pressure: Vec<f64>,
+    /// Per element: its elastic screen (used by cells with one pressure).
+    pub screen: Vec<Screen>,
 }
 
 impl RockState {
@@ -314,12 +460,26 @@ impl RockState {
             pressure: vec![0.0; ne],
             vertex_strain: vec![0.0; nv],
             vertex_pressure: vec![0.0; nv],
+            screen: vec![Screen::default(); ne],
         }
     }
 
-    /// Strengths divided by `f` ([`RockStrength::reduced`]); the history is kept.
+    /// Strengths divided by `f` ([`RockStrength::reduced`]); the history is
+    /// kept, the screens are disarmed (their margins were of the old surface).
     pub fn reduce(&mut self, f: f64) {
         self.surface = self.given.iter().map(|s| s.map(|s| MohrCoulomb::of(&s.reduced(f)))).collect();
+        self.disarm();
+    }
+
+    /// Every tetrahedron back to elastic with no plastic strain.
+    pub fn reset_history(&mut self) {
+        self.history.iter_mut().for_each(|h| *h = Default::default());
+        self.disarm();
+    }
+
+    /// Disarms every screen: the next step makes a full pass everywhere.
+    pub fn disarm(&mut self) {
+        self.screen.iter_mut().for_each(|s| s.radius2 = 0.0);
     }
 
     /// Whether any material yields.
@@ -340,6 +500,9 @@ pub struct PlasticCells {
     pub tets: Vec<TetB>,
     /// Per element: whether its volumetric strain is the nodal average.
     pub nodal: Vec<bool>,
+    /// Per tetrahedron (as `tets`): `G_t` of [`stress_sensitivity`] for a
+    /// cell with one pressure, 0 for the others (no [`Screen`]).
+    pub sensitivity: Vec<f64>,
     pub vertex_ptr: Vec<u32>,
     pub vertex_cells: Vec<u32>,
     topo: [TetTopology; 3],
@@ -351,6 +514,7 @@ impl Default for PlasticCells {
             offset: vec![0],
             tets: Vec::new(),
             nodal: Vec::new(),
+            sensitivity: Vec::new(),
             vertex_ptr: vec![0],
             vertex_cells: Vec::new(),
             topo: [TetTopology::of(CellKind::Tet4), TetTopology::of(CellKind::Prism6), TetTopology::of(CellKind::Hex8)],
@@ -359,13 +523,26 @@ impl Default for PlasticCells {
 }
 
 impl PlasticCells {
-    /// Appends one cell: its tetrahedra if it yields, none if not.
-    pub fn push(&mut self, kind: CellKind, corners: &[[f64; 3]], plastic: bool) {
-        if plastic {
+    /// Appends one cell: its tetrahedra if it yields (`lame`: its
+    /// elasticity), none if not.
+    pub fn push(&mut self, kind: CellKind, corners: &[[f64; 3]], plastic: Option<Lame>) {
+        let start = self.tets.len();
+        if plastic.is_some() {
             self.tets.extend(plastic_operator(kind, corners));
         }
         self.offset.push(self.tets.len());
-        self.nodal.push(plastic && kind != CellKind::Hex8);
+        let nodal = plastic.is_some() && kind != CellKind::Hex8;
+        self.nodal.push(nodal);
+        let g = match plastic {
+            Some(lame) if !nodal => stress_sensitivity(self.topology(kind), &self.tets[start..], lame),
+            _ => vec![0.0; self.tets.len() - start],
+        };
+        self.sensitivity.extend(g);
+    }
+
+    /// `G_t` of element `e`'s tetrahedra (zeros: the element has no screen).
+    pub fn sensitivity(&self, e: usize) -> &[f64] {
+        &self.sensitivity[self.offset[e]..self.offset[e + 1]]
     }
 
     /// Builds the vertex lists of the nodally averaged cells from each

@@ -12,8 +12,9 @@ use rayon::prelude::*;
 use crate::model::{Model, ELEMENT_SLOT};
 use crate::physics::element::element_force;
 use crate::physics::joint::{JointLaw, JointState};
+use crate::physics::mohr_coulomb::Yield;
 use crate::physics::plastic::{
-    add_pressure_force, cell_volumetric_strain, plastic_element_force, RockState, Volumetric,
+    add_pressure_force, cell_volumetric_strain, plastic_element_force, screen_radius, RockState, Volumetric,
 };
 use crate::physics::spring::{relative_displacement, spring_contact_force, SpringState};
 
@@ -41,7 +42,10 @@ pub fn element_forces(model: &Model, u: &[f64], f_elem: &mut [f64]) {
 /// 2. each vertex's average `J_a = sum_e w_e theta_e / sum_e w_e` over its
 ///    cells, `w_e = V_e / n_e`;
 /// 3. every element's force (a nodal cell uses `mean_(a in e) J_a` and
-///    leaves its pressure force out);
+///    leaves its pressure force out; a hexahedron whose armed
+///    [`Screen`](crate::physics::plastic::Screen) holds takes its fast path
+///    `K_e u_e - f_p`, and one whose full pass leaves every tetrahedron
+///    elastic arms it);
 /// 4. each vertex's mean stress `P_a = sum_e w_e p_e / sum_e w_e`;
 /// 5. each nodal cell's pressure force `V_e mean_(a in e) P_a g_c`, the
 ///    virtual work of step 2's average (Bonet & Burton's average nodal
@@ -49,7 +53,7 @@ pub fn element_forces(model: &Model, u: &[f64], f_elem: &mut [f64]) {
 pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_elem: &mut [f64]) {
     let el = &model.elements;
     let cells = &model.plastic;
-    let RockState { surface, history, volumetric, pressure, vertex_strain, vertex_pressure, .. } = rock;
+    let RockState { surface, history, volumetric, pressure, vertex_strain, vertex_pressure, screen, .. } = rock;
     let surface = &*surface;
     let vertex_of = |e: usize| el.corners(e).iter().map(|&n| model.mesh_node[n as usize] as usize);
     let weight = |e: usize| el.volume[e] / el.corners(e).len() as f64;
@@ -82,13 +86,15 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
         .zip(history.par_iter_mut())
         .zip(volumetric.par_iter_mut())
         .zip(pressure.par_iter_mut())
+        .zip(screen.par_iter_mut())
         .with_min_len(MIN_LEN / 16)
         .enumerate()
-        .for_each(|(e, (((f_e, hist), theta), p))| {
+        .for_each(|(e, ((((f_e, hist), theta), p), screen))| {
             let nodes = el.corners(e);
             let f_e = &mut f_e[..3 * nodes.len()];
             let material = el.material[e] as usize;
             match &surface[material] {
+                Some(_) if screen.holds(nodes, u) => screen.force(el.stiffness(e), nodes, u, f_e),
                 Some(mc) => {
                     let mode = match cells.nodal[e] {
                         true => {
@@ -97,20 +103,19 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
                         false => Volumetric::Cell,
                     };
                     let r = el.offset[e]..el.offset[e + 1];
-                    let step = plastic_element_force(
-                        cells.topology(el.kind[e]),
-                        cells.tets(e),
-                        &el.grad[r],
-                        model.materials[material].lame,
-                        mc,
-                        nodes,
-                        u,
-                        mode,
-                        model.water.as_ref().map_or(0.0, |w| w.element_pressure[e]),
-                        hist,
-                        f_e,
-                    );
+                    let (topo, tets, lame) =
+                        (cells.topology(el.kind[e]), cells.tets(e), model.materials[material].lame);
+                    let pore = model.water.as_ref().map_or(0.0, |w| w.element_pressure[e]);
+                    let step =
+                        plastic_element_force(topo, tets, &el.grad[r], lame, mc, nodes, u, mode, pore, hist, f_e);
                     (*theta, *p) = (step.volumetric, step.pressure);
+                    let g = cells.sensitivity(e);
+                    if !cells.nodal[e] && hist[..tets.len()].iter().all(|h| h.now == Yield::Elastic) {
+                        let radius = screen_radius(topo, tets, lame, mc, g, nodes, u, pore, hist);
+                        screen.arm(el.stiffness(e), nodes, u, f_e, radius);
+                    } else {
+                        screen.radius2 = 0.0;
+                    }
                 }
                 None => element_force(el.stiffness(e), nodes, u, f_e),
             }

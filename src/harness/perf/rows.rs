@@ -33,10 +33,13 @@ pub fn perf_rows(h: &Headline) -> Vec<Check> {
                 h.stream_gbs
             )),
         row("perf/plastic-over-condensed")
-            .value(h.plastic_pass.elastic_ratio(), GOAL_PLASTIC_OVER_CONDENSED, h.plastic_pass.elastic_s)
+            .value(h.plastic_pass.screened_ratio(), GOAL_PLASTIC_OVER_CONDENSED, h.plastic_pass.screened_s)
             .with_note(format!(
-                "plastic pass, every tetrahedron elastic {:.3} ms, every one yielding {:.3} ms ({:.1}x), condensed {:.3} ms",
+                "plastic pass, every tetrahedron elastic: {:.3} ms behind armed screens, {:.3} ms with the return \
+                 mappings run ({:.1}x); every one yielding {:.3} ms ({:.1}x: not met); condensed {:.3} ms",
+                1e3 * h.plastic_pass.screened_s,
                 1e3 * h.plastic_pass.elastic_s,
+                h.plastic_pass.elastic_ratio(),
                 1e3 * h.plastic_pass.yielding_s,
                 h.plastic_pass.yielding_ratio(),
                 1e3 * h.plastic_pass.condensed_s
