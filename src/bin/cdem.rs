@@ -276,6 +276,14 @@ enum Outcome {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    // The command runs on a worker of rayon's pool, not on this thread: a
+    // parallel pass started from outside the pool hands its work over and
+    // sleeps on a latch each time, thousands of times a second in a
+    // relaxation (references/performance.md, "2026-12-03").
+    rayon::scope(|_| command(cli))
+}
+
+fn command(cli: Cli) -> ExitCode {
     let reached = |r: cdem::Result<()>| r.map(|()| Outcome::Reached);
     let result = match cli.command {
         Command::Run { scene, out } => run(&scene, &out),
