@@ -489,6 +489,24 @@ mod tests {
         crate::physics::elasticity::YoungPoisson { young: 1e8, poisson: 0.3 }.into()
     }
 
+    /// A repeatable sweep of numbers uniform in [-1, 1) (a linear
+    /// congruential generator).
+    fn uniform(mut seed: u64) -> impl FnMut() -> f64 {
+        move || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+        }
+    }
+
+    /// The six planes of `mc` for the general search, at principal stresses `v`.
+    fn planes_at(mc: &MohrCoulomb, l: Lame, v: [f64; 3]) -> [Plane; PLANES] {
+        let d = principal_elasticity(l);
+        [0, 1, 2, 3, 4, 5].map(|p| {
+            let (m, k, n) = mc.plane(p);
+            Plane { m, k, dn: mat_vec(&d, n), excess: dot3(m, v) - k }
+        })
+    }
+
     fn rock(c: f64, phi: f64, t: f64, psi: f64) -> MohrCoulomb {
         MohrCoulomb::of(&RockStrength {
             cohesion: c,
@@ -520,11 +538,7 @@ mod tests {
 
     #[test]
     fn the_spectral_update_is_the_rotation_of_the_new_principal_values() {
-        let mut seed = 7u64;
-        let mut next = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
-        };
+        let mut next = uniform(7);
         for k in 0..500 {
             let mut s = [0; 6].map(|_| next());
             if k % 5 == 0 {
@@ -644,11 +658,7 @@ mod tests {
         // or inside the surface, and rotating the trial rotates the result.
         let l = lame();
         let mc = rock(8e4, 25.0, 2e4, 5.0);
-        let mut seed = 1u64;
-        let mut next = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
-        };
+        let mut next = uniform(1);
         for _ in 0..2000 {
             let trial = [0; 6].map(|_| 1e6 * next());
             let (s, _) = mc.return_map(l, trial);
@@ -664,16 +674,8 @@ mod tests {
         // the set [0].
         let l = lame();
         let mc = rock(8e4, 25.0, 2e4, 5.0);
-        let d = principal_elasticity(l);
-        let planes = [0, 1, 2, 3, 4, 5].map(|p| {
-            let (m, k, n) = mc.plane(p);
-            (m, k, mat_vec(&d, n))
-        });
-        let (mut seed, mut answered) = (7u64, 0);
-        let mut next = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
-        };
+        let mut answered = 0;
+        let mut next = uniform(7);
         for _ in 0..2000 {
             let mut v = [0; 3].map(|_| 1e6 * next());
             v.sort_by(|a, b| b.total_cmp(a));
@@ -682,10 +684,7 @@ mod tests {
             if main <= tol {
                 continue;
             }
-            let general = {
-                let ps = planes.map(|(m, k, dn)| Plane { m, k, dn, excess: dot3(m, v) - k });
-                return_to(&ps, &[0], v, tol).map(|(r, _)| r)
-            };
+            let general = return_to(&planes_at(&mc, l, v), &[0], v, tol).map(|(r, _)| r);
             let fast = mc.main_plane_return(l, v, main, tol);
             assert_eq!(fast, general, "{v:?}");
             answered += usize::from(fast.is_some());
@@ -699,25 +698,14 @@ mod tests {
         // gives the same stress to rounding, and declines where it declines.
         let l = lame();
         let mc = rock(8e4, 25.0, 2e4, 5.0);
-        let d = principal_elasticity(l);
-        let planes = [0, 1, 2, 3, 4, 5].map(|p| {
-            let (m, k, n) = mc.plane(p);
-            (m, k, mat_vec(&d, n))
-        });
-        let (mut seed, mut answered) = (11u64, [0; 3]);
-        let mut next = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
-        };
+        let mut answered = [0; 3];
+        let mut next = uniform(11);
         for _ in 0..4000 {
             let mut v = [0; 3].map(|_| 1e6 * next());
             v.sort_by(|a, b| b.total_cmp(a));
             let tol = 1e-12 * 1e6;
             for q in [1, 2] {
-                let general = {
-                    let ps = planes.map(|(m, k, dn)| Plane { m, k, dn, excess: dot3(m, v) - k });
-                    return_to(&ps, &[0, q], v, tol).map(|(r, _)| r)
-                };
+                let general = return_to(&planes_at(&mc, l, v), &[0, q], v, tol).map(|(r, _)| r);
                 let fast = mc.edge_return(l, v, q, tol);
                 assert_eq!(fast.is_some(), general.is_some(), "{v:?} q {q}");
                 if let (Some(a), Some(b)) = (fast, general) {
