@@ -97,14 +97,54 @@ fn griffiths_and_lanes_slope_with_plastic_blocks_finds_its_factor_of_safety() {
 /// Elastic, the plastic element's forces (deviatoric per tetrahedron plus
 /// the cell-averaged pressure) are its mixed stiffness times the
 /// displacement: the kernel and the phase-1 `K_e` of a plastic block agree.
+/// A hexahedron with no two faces parallel, for the one-cell checks.
+const DISTORTED_HEX: [[f64; 3]; 8] = [
+    [0., 0., 0.],
+    [1.1, 0., 0.1],
+    [1., 1., 0.],
+    [0., 0.9, 0.],
+    [0., 0., 1.],
+    [1., 0.1, 1.2],
+    [1., 1., 1.],
+    [0.1, 1., 1.],
+];
+
+/// One full pass of a lone plastic cell (its nodes numbered from 0, its own
+/// volumetric strain, no pore water): its corner forces, its history advanced.
+fn cell_pass(
+    kind: cdem::mesh::shape::CellKind,
+    tets: &[cdem::physics::plastic::TetB],
+    grad: &[[f64; 3]],
+    lame: cdem::physics::elasticity::Lame,
+    surface: &cdem::physics::mohr_coulomb::MohrCoulomb,
+    u: &[f64],
+    hist: &mut cdem::physics::plastic::CellHistory,
+) -> Vec<f64> {
+    let nodes: Vec<u32> = (0..u.len() as u32 / 3).collect();
+    let mut f = vec![0.0; u.len()];
+    cdem::physics::plastic::plastic_element_force(
+        &cdem::physics::tet_operator::TetTopology::of(kind),
+        tets,
+        grad,
+        lame,
+        surface,
+        &nodes,
+        u,
+        cdem::physics::plastic::Volumetric::Cell,
+        0.0,
+        hist,
+        &mut f,
+    );
+    f
+}
+
 #[test]
 fn the_elastic_plastic_element_is_its_mixed_stiffness() {
     use cdem::mesh::shape::CellKind;
     use cdem::physics::element::{element_force, element_operators, pack_symmetric};
     use cdem::physics::material::{Material, MaterialLaw, YoungPoisson};
     use cdem::physics::mohr_coulomb::MohrCoulomb;
-    use cdem::physics::plastic::{plastic_element_force, plastic_operator, TetPlastic, Volumetric, MAX_TETS};
-    use cdem::physics::tet_operator::TetTopology;
+    use cdem::physics::plastic::plastic_operator;
     let strong = RockStrength { cohesion: 1e12, tan_phi: 0.5, tensile: 1e12, tan_psi: 0.0 };
     let material = Material {
         lame: YoungPoisson { young: 1e9, poisson: 0.3 }.into(),
@@ -112,19 +152,7 @@ fn the_elastic_plastic_element_is_its_mixed_stiffness() {
         law: MaterialLaw::MohrCoulomb(strong),
     };
     let cells: [(CellKind, Vec<[f64; 3]>); 3] = [
-        (
-            CellKind::Hex8,
-            vec![
-                [0., 0., 0.],
-                [1.1, 0., 0.1],
-                [1., 1., 0.],
-                [0., 0.9, 0.],
-                [0., 0., 1.],
-                [1., 0.1, 1.2],
-                [1., 1., 1.],
-                [0.1, 1., 1.],
-            ],
-        ),
+        (CellKind::Hex8, DISTORTED_HEX.to_vec()),
         (CellKind::Prism6, vec![[0., 0., 0.], [1., 0., 0.], [0., 1., 0.1], [0., 0., 1.], [1.1, 0., 1.], [0., 1., 1.]]),
         (CellKind::Tet4, vec![[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.]]),
     ];
@@ -135,23 +163,9 @@ fn the_elastic_plastic_element_is_its_mixed_stiffness() {
         let u: Vec<f64> = (0..3 * n).map(|k| 1e-4 * ((k as f64) * 0.77).sin()).collect();
         let mut want = vec![0.0; 3 * n];
         element_force(&pack_symmetric(&ops.k, n), &nodes, &u, &mut want);
-        let mut got = vec![0.0; 3 * n];
-        let mut hist = [TetPlastic::default(); MAX_TETS];
         let tets = plastic_operator(kind, &corners);
-        let surface = MohrCoulomb::of(&strong);
-        plastic_element_force(
-            &TetTopology::of(kind),
-            &tets,
-            &ops.grad,
-            material.lame,
-            &surface,
-            &nodes,
-            &u,
-            Volumetric::Cell,
-            0.0,
-            &mut hist,
-            &mut got,
-        );
+        let got =
+            cell_pass(kind, &tets, &ops.grad, material.lame, &MohrCoulomb::of(&strong), &u, &mut Default::default());
         let scale = want.iter().fold(0.0f64, |a, v| a.max(v.abs()));
         for (g, w) in got.iter().zip(&want) {
             assert!((g - w).abs() <= 1e-12 * scale, "{kind:?}: {got:?} vs {want:?}");
@@ -169,8 +183,7 @@ fn the_elastic_screen_lets_no_tetrahedron_yield_inside_its_radius() {
     use cdem::physics::material::{Material, MaterialLaw, YoungPoisson};
     use cdem::physics::mohr_coulomb::{MohrCoulomb, Yield};
     use cdem::physics::plastic::{
-        plastic_element_force, plastic_operator, screen_radius, stress_sensitivity, Screen, TetPlastic, Volumetric,
-        MAX_TETS,
+        plastic_operator, screen_radius, stress_sensitivity, CellHistory, Screen, TetPlastic, MAX_TETS,
     };
     use cdem::physics::tet_operator::TetTopology;
     let strength = RockStrength { cohesion: 2e4, tan_phi: 30f64.to_radians().tan(), tensile: 1e4, tan_psi: 0.0 };
@@ -179,16 +192,7 @@ fn the_elastic_screen_lets_no_tetrahedron_yield_inside_its_radius() {
         density: 2000.0,
         law: MaterialLaw::MohrCoulomb(strength),
     };
-    let corners = vec![
-        [0., 0., 0.],
-        [1.1, 0., 0.1],
-        [1., 1., 0.],
-        [0., 0.9, 0.],
-        [0., 0., 1.],
-        [1., 0.1, 1.2],
-        [1., 1., 1.],
-        [0.1, 1., 1.],
-    ];
+    let corners = DISTORTED_HEX.to_vec();
     let kind = CellKind::Hex8;
     let ops = element_operators(kind, &corners, &material).unwrap();
     let k = pack_symmetric(&ops.k, 8);
@@ -196,23 +200,7 @@ fn the_elastic_screen_lets_no_tetrahedron_yield_inside_its_radius() {
     let surface = MohrCoulomb::of(&strength);
     let g = stress_sensitivity(&topo, &tets, material.lame);
     let nodes: Vec<u32> = (0..8).collect();
-    let pass = |u: &[f64], hist: &mut [TetPlastic; MAX_TETS]| {
-        let mut f = vec![0.0; 24];
-        plastic_element_force(
-            &topo,
-            &tets,
-            &ops.grad,
-            material.lame,
-            &surface,
-            &nodes,
-            u,
-            Volumetric::Cell,
-            0.0,
-            hist,
-            &mut f,
-        );
-        f
-    };
+    let pass = |u: &[f64], hist: &mut CellHistory| cell_pass(kind, &tets, &ops.grad, material.lame, &surface, u, hist);
     let mut seed = 5u64;
     let mut next = move || {
         seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
