@@ -181,8 +181,11 @@ fn cohesive_fs_converges_to_the_closed_form_at_second_order() {
     let (section, circle, exact) = segment_case();
     let err = |n: usize| {
         let fs = evaluate_circle(&section, circle, n).unwrap();
-        assert_eq!(fs.ordinary, fs.bishop, "phi = 0: Bishop reduces to the ordinary method");
-        (fs.ordinary.unwrap() - exact).abs() / exact
+        let (o, b) = (fs.ordinary.unwrap(), fs.bishop.unwrap());
+        // Bishop sums its slices in four interleaved lanes, the ordinary
+        // method in one: the same value up to the order of the additions.
+        assert!((o - b).abs() <= 1e-14 * o, "phi = 0: Bishop {b} should reduce to the ordinary method {o}");
+        (o - exact).abs() / exact
     };
     let (e25, e100) = (err(25), err(100));
     let rate = (e25 / e100).ln() / 4f64.ln();

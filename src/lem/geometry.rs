@@ -427,23 +427,35 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
     let homogeneous = f.homogeneous();
     let eps_z = 1e-9 * f.height();
     let (mut deep, mut drive, mut gross, mut resist) = (false, 0.0, 0.0f64, 0.0);
+    for v in [&mut s.u, &mut s.spencer_r, &mut s.spencer_d] {
+        sized(v, n);
+    }
+    let water = &f.water;
+    let dry = matches!(water.pore, Pore::Dry);
     if let Some(m) = homogeneous {
-        // One material: the same sums as below, without the per-slice lookups.
+        // One material: the same sums as below, without the per-slice lookups;
+        // dry, pass 4's Spencer constants too (u = 0), in the same loop.
         s.c.fill(m.c);
         s.tan_phi.fill(m.tan_phi);
         let ends = s.xb.windows(2);
         let per_slice = s.w.iter_mut().zip(&s.sin_a).zip(&s.cos_a).zip(&s.l);
-        let out = s.bishop_a.iter_mut().zip(s.bishop_b.iter_mut());
-        for (((((w, &sin_a), &cos_a), &l), x), (ba, bb)) in per_slice.zip(ends).zip(out) {
+        let out = s.bishop_a.iter_mut().zip(s.bishop_b.iter_mut()).zip(s.spencer_r.iter_mut().zip(&mut s.spencer_d));
+        for (((((w, &sin_a), &cos_a), &l), x), ((ba, bb), (sr, sd))) in per_slice.zip(ends).zip(out) {
             let a = w.max(0.0);
             let weight = m.gamma * a;
             deep |= a >= lim.min_depth * (x[1] - x[0]);
             drive += weight * sin_a;
             gross += (weight * sin_a).abs();
             *w = weight;
-            resist += m.c * l + weight * cos_a * m.tan_phi;
+            let r_i = m.c * l + weight * cos_a * m.tan_phi;
+            resist += r_i;
             *ba = m.c * l * cos_a + weight * m.tan_phi;
             *bb = sin_a * m.tan_phi;
+            *sr = r_i;
+            *sd = weight * sin_a;
+        }
+        if dry {
+            s.u.fill(0.0);
         }
     }
     for i in (0..n).filter(|_| homogeneous.is_none()) {
@@ -465,11 +477,7 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
     }
     // Pass 4: pore water (module docs of `lem`): u at the middle of each
     // base, the effective normal forces, and the crack's water force.
-    for v in [&mut s.u, &mut s.spencer_r, &mut s.spencer_d] {
-        sized(v, n);
-    }
-    let water = &f.water;
-    for i in 0..n {
+    for i in (0..n).filter(|_| !(dry && homogeneous.is_some())) {
         let (w, sa, ca, l, t) = (s.w[i], s.sin_a[i], s.cos_a[i], s.l[i], s.tan_phi[i]);
         let u = match &water.pore {
             Pore::Dry => 0.0,

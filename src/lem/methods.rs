@@ -42,20 +42,39 @@ pub(crate) fn bishop_counted(s: &Slices, f0: f64) -> Option<(f64, usize)> {
         let inv_f = 1.0 / f;
         // resist = sum a / m, slope = sum a b / m^2 = F^2 d(resist)/dF.
         // a = c b + (W - u b) tan_phi, b = sin(alpha) tan_phi (from fill_slices).
-        let (mut resist, mut slope, mut curve, mut bad) = (0.0, 0.0, 0.0, false);
-        for ((&a, &b), &cos_a) in s.bishop_a.iter().zip(&s.bishop_b).zip(&s.cos_a) {
+        // Four interleaved partial sums (lane k takes slices k, k + 4, ...),
+        // added in a fixed order: the loop vectorizes, and the result
+        // depends on nothing but the slices.
+        const L: usize = 4;
+        let (mut resist, mut slope, mut curve, mut min_m) = ([0.0; L], [0.0; L], [0.0; L], [f64::INFINITY; L]);
+        let mut lane = |k: usize, a: f64, b: f64, cos_a: f64| {
             let m_alpha = cos_a + b * inv_f;
-            bad |= m_alpha <= 0.0;
+            min_m[k] = if m_alpha < min_m[k] { m_alpha } else { min_m[k] };
             let inv_m = 1.0 / m_alpha;
             let q = a * inv_m;
             let qb = q * b * inv_m;
-            resist += q;
-            slope += qb;
-            curve += qb * b * inv_m;
+            resist[k] += q;
+            slope[k] += qb;
+            curve[k] += qb * b * inv_m;
+        };
+        let (a, b, cos_a) = (s.bishop_a.chunks_exact(L), s.bishop_b.chunks_exact(L), s.cos_a.chunks_exact(L));
+        let rest = (a.remainder(), b.remainder(), cos_a.remainder());
+        for ((a, b), cos_a) in a.zip(b).zip(cos_a) {
+            for k in 0..L {
+                lane(k, a[k], b[k], cos_a[k]);
+            }
         }
-        if bad {
+        for k in 0..rest.0.len() {
+            lane(k, rest.0[k], rest.1[k], rest.2[k]);
+        }
+        let sum = |v: [f64; L]| (v[0] + v[1]) + (v[2] + v[3]);
+        // A NaN m_alpha is not caught here (it never compares below the
+        // minimum); it makes the sums NaN, and the fixed-point test below
+        // returns None.
+        if min_m.iter().any(|&m| m <= 0.0) {
             return None;
         }
+        let (resist, slope, curve) = (sum(resist), sum(slope), sum(curve));
         let fixed_point = resist / drive;
         if !(fixed_point.is_finite() && fixed_point > 0.0) {
             return None;
