@@ -5,7 +5,8 @@
 //! docs/method.md section 2.9b.
 //!
 //! `cargo run --release --example trial_probe -- SCENE F1 F2 ...` (with
-//! `PROBE_WORST=1`: also the node with the largest unbalanced force).
+//! `PROBE_WORST=1`: also the node with the largest unbalanced force; with
+//! `PROBE_STEPS=A-B`: the ratio and kinetic energy at every step from A to B).
 
 use std::ops::ControlFlow;
 
@@ -26,6 +27,15 @@ impl Watch for Trace<'_> {
         if view.steps == 1 {
             self.start = view.state.u.clone();
             self.last = 0.0;
+        }
+        // PROBE_STEPS=A-B: every step of that range (ratio, kinetic energy).
+        if let Some((a, b)) = std::env::var("PROBE_STEPS").ok().and_then(|r| {
+            let (a, b) = r.split_once('-')?;
+            Some((a.parse::<usize>().ok()?, b.parse::<usize>().ok()?))
+        }) {
+            if (a..=b).contains(&view.steps) {
+                println!("    step {:6} ratio {:.3e} kinetic {:.3e}", view.steps, view.ratio, view.kinetic);
+            }
         }
         if view.steps.is_multiple_of(self.window) {
             let rule = sliding_rule(self.model, &self.start, &Default::default());

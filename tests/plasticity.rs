@@ -2,7 +2,9 @@
 
 use cdem::harness::registry as reg;
 use cdem::harness::report::record;
-use cdem::harness::suite::plastic::{column_rows, element_limit_row, gl1_hex_row, gl1_prism_rows, prandtl_row};
+use cdem::harness::suite::plastic::{
+    column_rows, element_limit_row, gl1_hex_row, gl1_prism_rows, paper_slope_row, prandtl_row,
+};
 use cdem::physics::material::RockStrength;
 
 #[test]
@@ -63,14 +65,19 @@ fn prandtls_footing_reaches_a_plateau_near_its_bearing_capacity() {
     record("plasticity_prandtl", std::slice::from_ref(&row));
 }
 
+/// One line per trial of a strength reduction.
+fn print_trials(label: &str, result: &cdem::drivers::SrmResult) {
+    for t in &result.trials {
+        println!("{label}F = {:.4}: {:?} after {} steps, {:.3e} m", t.factor, t.outcome, t.steps, t.max_displacement);
+    }
+}
+
 /// Griffiths & Lane's slope with plastic blocks: the factor of safety where
 /// nobody drew the slip surface, against the chart's.
 #[test]
 fn griffiths_and_lanes_slope_with_plastic_blocks_finds_its_factor_of_safety() {
     let run = gl1_hex_row().expect("gl1");
-    for t in &run.result.trials {
-        println!("F = {:.4}: {:?} after {} steps, {:.3e} m", t.factor, t.outcome, t.steps, t.max_displacement);
-    }
+    print_trials("", &run.result);
     println!(
         "{}: FS {:.4} {:?} vs {:.3} (published FE {})",
         run.row.id,
@@ -83,15 +90,29 @@ fn griffiths_and_lanes_slope_with_plastic_blocks_finds_its_factor_of_safety() {
     // The same slope on unstructured prisms: reported rows (issue 24's mesh
     // independence, not met: references/plastic.md), each with a bracket.
     let (prism, spread) = gl1_prism_rows(&run).expect("gl1 prisms");
-    for t in &prism.result.trials {
-        println!("prisms F = {:.4}: {:?} after {} steps, {:.3e} m", t.factor, t.outcome, t.steps, t.max_displacement);
-    }
+    print_trials("prisms ", &prism.result);
     println!(
         "{}: FS {:.4} {:?}; {}: {:.4} ({})",
         prism.row.id, prism.row.ours, prism.result.bracket, spread.id, spread.ours, spread.note
     );
     assert!(prism.row.defect.is_none() && spread.defect.is_none(), "{:?}", prism.row.defect);
     record("plasticity_slope", &[run.row, prism.row, spread]);
+}
+
+/// The paper's slope with plastic blocks and every interface breakable at
+/// the rock mass's strength (issue 24, item 6): a factor of safety within
+/// 5 % of the LEM, with a bracket at most 0.01 wide (its springs carry
+/// dashpots: docs/method.md 2.9b).
+#[test]
+fn the_paper_slope_with_plastic_blocks_and_breakable_interfaces_finds_its_factor_of_safety() {
+    let run = paper_slope_row().expect("paper slope");
+    print_trials("", &run.result);
+    println!(
+        "{}: FS {:.4} {:?} vs {:.3} (Liu, Li & Liu's LEM)",
+        run.row.id, run.row.ours, run.result.bracket, run.row.reference
+    );
+    assert!(run.row.passed(), "{:?}", run.row.defect);
+    record("plasticity_paper_slope", &[run.row]);
 }
 
 /// Elastic, the plastic element's forces (deviatoric per tetrahedron plus

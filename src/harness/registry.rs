@@ -301,7 +301,7 @@ pub const PLASTIC_PRANDTL: Case = Case {
 pub const PLASTIC_PAPER_SLOPE: Case = Case {
     name: "paper slope, plastic blocks and every interface breakable at the rock mass strength",
     input: "verification/plastic/paper-slope/paper-slope.toml",
-    checks: "`cdem srm` FS against the LEM (references/plastic.md, measured, not a row); its mesh times the plastic element pass (`cdem perf`)",
+    checks: "`cdem srm` FS against Liu, Li & Liu's LEM within 5 % (row plastic/paper-slope-srm, tests/plasticity.rs); its mesh times the plastic element pass (`cdem perf`)",
     source: PLASTIC_MD,
 };
 
@@ -1051,6 +1051,7 @@ pub const ROWS: &[RowSpec] = &[
     spec("plastic/prandtl", "Prandtl's rough strip footing, half model, 1050 hexahedra, Tresca c 0.1 MPa, pushed 60 mm at a constant rate", "plateau of the footing pressure (Pa) vs (2 + pi) c", Reported(Goal::Within(GOAL_PRANDTL)), PLASTIC_MD, "tests/plasticity.rs"),
     spec("plastic/gl1-hex-srm", "Griffiths & Lane 1999 ex. 1, plastic blocks, 384 structured hexahedra", "FS (strength reduction) vs Bishop & Morgenstern's chart", Asserted(TOL_PLASTIC_SLOPE), PLASTIC_MD, "tests/plasticity.rs"),
     spec("plastic/gl1-prism-srm", "Griffiths & Lane 1999 ex. 1, plastic blocks, 277 unstructured prisms", "FS (strength reduction) vs Bishop & Morgenstern's chart", Reported(Goal::Within(TOL_PLASTIC_SLOPE)), PLASTIC_MD, "tests/plasticity.rs"),
+    spec("plastic/paper-slope-srm", "paper slope, plastic blocks and every interface breakable at the rock mass strength, 1000 hexahedra", "FS (strength reduction) vs Liu, Li & Liu's LEM", Asserted(TOL_PLASTIC_SLOPE), PLASTIC_MD, "tests/plasticity.rs").with_reference(PAPER_LEM_FS.value),
     spec("plastic/gl1-mesh-spread", "Griffiths & Lane 1999 ex. 1, plastic blocks, prisms against hexahedra", "|FS prisms - FS hexahedra| / FS hexahedra (goal <= 3 %, issue 24 item 4)", Reported(Goal::AtMost), PLASTIC_MD, "tests/plasticity.rs"),
     // Joint sets: the rock-slope mechanisms against their closed forms (tests/joints.rs).
     spec("joints/plane-srm", "plane failure, dry tension crack (Hoek & Bray)", "FS (strength reduction) vs closed form", Asserted(TOL_JOINTS_SRM), JOINTS_MD, "tests/joints.rs"),

@@ -39,7 +39,10 @@
 //! `tan(phi) K_n` between normal and shear increments. It is left to the
 //! solver's energy monitor, which has not fired on any case with block masses
 //! in phase 2 (the slip-surface slope, the stable slope, Wulong, the block on
-//! a plane). The blocks also couple the inertia of copies that have
+//! a plane). The spring dashpots of a failure phase with plastic blocks
+//! (`physics::damping::dashpot_beta`) take half of the room this bound
+//! leaves (`Omega <= 2 safety`) for a stiffness-proportional damping.
+//! The blocks also couple the inertia of copies that have
 //! separated: that changes the fictitious path of the relaxation, not its
 //! equilibria (`M^-1 f = 0` if and only if `f = 0`).
 

@@ -10,6 +10,7 @@
 use rayon::prelude::*;
 
 use crate::model::{Model, ELEMENT_SLOT};
+use crate::physics::damping::spring_dashpot;
 use crate::physics::element::element_force;
 use crate::physics::joint::{JointLaw, JointState};
 use crate::physics::mohr_coulomb::Yield;
@@ -178,6 +179,40 @@ pub fn spring_forces_with_failure(
         });
 }
 
+/// The spring dashpots (failure phase with plastic blocks): each spring's
+/// damping force on its node `a` from the velocities `v`
+/// ([`crate::physics::damping::spring_dashpot`]).
+pub fn spring_dashpots(model: &Model, v: &[f64], beta: f64, f_dash: &mut [[f64; 3]]) {
+    let sp = &model.springs;
+    f_dash.par_iter_mut().with_min_len(MIN_LEN).enumerate().for_each(|(s, f)| {
+        let w = relative_displacement(v, sp.a[s] as usize, sp.b[s] as usize);
+        *f = spring_dashpot(beta, sp.kn[s], sp.ks[s], sp.normal[s], w);
+    });
+}
+
+/// Per node, the sum of its springs' forces `f_spring` (on node `a`, the
+/// opposite on node `b`), as [`gather`] adds them.
+pub fn gather_springs(model: &Model, f_spring: &[[f64; 3]], out: &mut [f64]) {
+    out.par_chunks_mut(3).with_min_len(MIN_LEN).enumerate().for_each(|(i, f)| {
+        let mut sum = [0.0; 3];
+        add_springs(model, f_spring, i, &mut sum);
+        f.copy_from_slice(&sum);
+    });
+}
+
+/// Adds node `i`'s spring forces to `sum`, in its gather order.
+#[inline]
+fn add_springs(model: &Model, f_spring: &[[f64; 3]], i: usize, sum: &mut [f64; 3]) {
+    let g = &model.gather;
+    for &end in &g.spring_end[g.spring_ptr[i] as usize..g.spring_ptr[i + 1] as usize] {
+        let fs = f_spring[(end >> 1) as usize];
+        let sign = if end & 1 == 1 { 1.0 } else { -1.0 };
+        for d in 0..3 {
+            sum[d] += sign * fs[d];
+        }
+    }
+}
+
 pub fn gather(model: &Model, f_elem: &[f64], f_spring: &[[f64; 3]], f_int: &mut [f64]) {
     let g = &model.gather;
     f_int.par_chunks_mut(3).with_min_len(MIN_LEN).enumerate().for_each(|(i, f)| {
@@ -188,13 +223,7 @@ pub fn gather(model: &Model, f_elem: &[f64], f_spring: &[[f64; 3]], f_int: &mut 
                 sum[d] += f_elem[slot + d];
             }
         }
-        for &end in &g.spring_end[g.spring_ptr[i] as usize..g.spring_ptr[i + 1] as usize] {
-            let fs = f_spring[(end >> 1) as usize];
-            let sign = if end & 1 == 1 { 1.0 } else { -1.0 };
-            for d in 0..3 {
-                sum[d] += sign * fs[d];
-            }
-        }
+        add_springs(model, f_spring, i, &mut sum);
         f.copy_from_slice(&sum);
     });
 }

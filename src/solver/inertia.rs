@@ -63,11 +63,12 @@ impl Inertia {
         }
     }
 
-    /// Prepares this step's accelerations (block masses: `M^-1 (f_ext - f_int)`
-    /// in two parallel passes; lumped: nothing, the update divides).
-    pub fn prepare(&mut self, fixed: &[bool], f_ext: &[f64], f_int: &[f64]) {
+    /// Prepares this step's accelerations (block masses: `M^-1 (f_ext - f_int
+    /// - f_dash)` in two parallel passes; lumped: nothing, the update divides).
+    pub fn prepare(&mut self, fixed: &[bool], f_ext: &[f64], f_int: &[f64], f_dash: Option<&[f64]>) {
         if let Some(b) = &mut self.block {
-            b.mass.accelerations(|k| integrate::unbalanced(fixed, f_ext, f_int, k), &mut b.slot_force, &mut b.slot_acc);
+            let f = |k| integrate::driving(fixed, f_ext, f_int, f_dash, k);
+            b.mass.accelerations(f, &mut b.slot_force, &mut b.slot_acc);
         }
     }
 

@@ -40,6 +40,21 @@ pub struct UpdateInput<'a> {
     pub alpha: f64,
     /// Viscous damping coefficient `c` (1/s), used by `Viscous`.
     pub c: f64,
+    /// The spring dashpots' forces per component, if any: they drive the
+    /// update (`a = M^-1 (f_ext - f_int - f_dash)`) but are not part of the
+    /// unbalanced force the ratio measures (a mass creeping at the
+    /// dashpots' terminal velocity is not at rest).
+    pub f_dash: Option<&'a [f64]>,
+}
+
+/// The force that accelerates component `k`: the unbalanced force less the
+/// dashpots' (0 if fixed).
+#[inline]
+pub fn driving(fixed: &[bool], f_ext: &[f64], f_int: &[f64], f_dash: Option<&[f64]>, k: usize) -> f64 {
+    match f_dash {
+        Some(d) if !fixed[k] => f_ext[k] - f_int[k] - d[k],
+        _ => unbalanced(fixed, f_ext, f_int, k),
+    }
 }
 
 /// The unbalanced force `f_ext - f_int` on component `k`, 0 if it is fixed.
@@ -77,11 +92,12 @@ fn integrate_range(inp: &UpdateInput, first: usize, u: &mut [f64], v: &mut [f64]
     let mut rep = UpdateReport::default();
     let dt = inp.dt;
     let unbalanced = |k: usize| unbalanced(inp.fixed, inp.f_ext, inp.f_int, k);
+    let driving = |k: usize| driving(inp.fixed, inp.f_ext, inp.f_int, inp.f_dash, k);
     for (j, (u, v)) in u.chunks_exact_mut(3).zip(v.chunks_exact_mut(3)).enumerate() {
         let i = first / 3 + j;
         // Per component: the mass and the velocity change `dt M^-1 f`.
         let (m, dv) = match inp.mass {
-            Masses::Lumped(m) => ([m[i]; 3], [0, 1, 2].map(|d| dt * unbalanced(3 * i + d) / m[i])),
+            Masses::Lumped(m) => ([m[i]; 3], [0, 1, 2].map(|d| dt * driving(3 * i + d) / m[i])),
             Masses::Block(b, acc) => (b.diagonal[i], b.acceleration(acc, i).map(|a| dt * a)),
         };
         for d in 0..3 {
@@ -93,7 +109,10 @@ fn integrate_range(inp: &UpdateInput, first: usize, u: &mut [f64], v: &mut [f64]
             let f = unbalanced(k);
             rep.max_unbalanced = rep.max_unbalanced.max(f.abs());
             v[d] = match inp.damping {
-                DampingKind::Local => v[d] + dt * (f - local_damping(inp.alpha, f, v[d])) / m[d],
+                DampingKind::Local => {
+                    let f = driving(k);
+                    v[d] + dt * (f - local_damping(inp.alpha, f, v[d])) / m[d]
+                }
                 DampingKind::Viscous => {
                     let h = 0.5 * inp.c * dt;
                     ((1.0 - h) * v[d] + dv[d]) / (1.0 + h)

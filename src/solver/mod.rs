@@ -2,7 +2,9 @@
 //!
 //! One step is a short list of named stages:
 //! 1. internal forces: elements (eq. 12) and springs (eq. 15);
-//! 2. update: damping (eq. 13) and explicit integration (eq. 14) with fixities;
+//! 2. update: damping (eq. 13: the spring dashpots where they are on, then
+//!    the viscous or local damping) and explicit integration (eq. 14) with
+//!    fixities;
 //! 3. monitor: convergence ratio, energies, non-finite state and blow-up.
 //!
 //! [`relax`](relax::relax) steps until a stop rule fires; it is the one loop
@@ -34,7 +36,7 @@ use serde::Serialize;
 use crate::error::SolveError;
 use crate::model::Model;
 use crate::model::ELEMENT_SLOT;
-use crate::physics::damping::{rayleigh_omega2, rayleigh_omega2_with};
+use crate::physics::damping::{dashpot_beta, rayleigh_omega2, rayleigh_omega2_with};
 use crate::physics::joint::{CoulombJoint, JointState};
 use crate::physics::plastic::RockState;
 use crate::physics::spring::SpringState;
@@ -109,6 +111,14 @@ pub struct Solver {
     /// Failure phase on for the blocks: plastic elements integrate per
     /// tetrahedron. Only true when the model has plastic blocks.
     plastic: bool,
+    /// The spring dashpots' `beta` (s; 0: none): on in the failure phase of
+    /// a model with plastic blocks and breakable springs
+    /// ([`crate::physics::damping::dashpot_beta`]).
+    dashpot_beta: f64,
+    /// Scratch: each spring's dashpot force on its node `a`, and their sum
+    /// per component (empty until the dashpots are on).
+    f_dash_spring: Vec<[f64; 3]>,
+    f_dash: Vec<f64>,
 }
 
 impl Solver {
@@ -143,6 +153,9 @@ impl Solver {
             partial: vec![integrate::UpdateReport::default(); (3 * model.n_nodes()).div_ceil(integrate::CHUNK)],
             failure: false,
             plastic: false,
+            dashpot_beta: 0.0,
+            f_dash_spring: Vec::new(),
+            f_dash: Vec::new(),
         })
     }
 
@@ -195,6 +208,20 @@ impl Solver {
     pub fn set_failure(&mut self, model: &Model, on: bool) {
         self.failure = on && model.has_breakable_interface();
         self.plastic = on && model.has_plastic_blocks();
+        self.dashpot_beta = match self.failure && self.plastic {
+            true => dashpot_beta(self.params.safety, self.dt),
+            false => 0.0,
+        };
+        if self.dashpot_beta > 0.0 && self.f_dash.is_empty() {
+            self.f_dash_spring = vec![[0.0; 3]; model.springs.len()];
+            self.f_dash = vec![0.0; 3 * model.n_nodes()];
+        }
+    }
+
+    /// Whether the spring dashpots are on (the failure phase of a model
+    /// with plastic blocks and breakable springs).
+    pub fn has_dashpots(&self) -> bool {
+        self.dashpot_beta > 0.0
     }
 
     /// Kinetic energy `v . M v / 2` with the inertial masses (J).
@@ -228,8 +255,10 @@ impl Solver {
     /// One step. Returns `(max unbalanced force, kinetic energy)`.
     pub fn step(&mut self, model: &Model, state: &mut State) -> Result<(f64, f64), SolveError> {
         self.internal_forces(model, state);
+        let dashpots = self.dashpots(model, state);
         self.update_damping(state);
-        self.inertia.prepare(&model.fixed, &model.f_ext, &state.f_int);
+        let f_dash = dashpots.then_some(&self.f_dash[..]);
+        self.inertia.prepare(&model.fixed, &model.f_ext, &state.f_int, f_dash);
         let inp = UpdateInput {
             mass: self.inertia.masses(),
             fixed: &model.fixed,
@@ -239,6 +268,7 @@ impl Solver {
             damping: self.params.damping,
             alpha: self.params.local_damping,
             c: self.viscous_c,
+            f_dash,
         };
         let rep = integrate(&inp, &mut state.u, &mut state.v, &mut self.partial);
         state.step += 1;
@@ -252,6 +282,18 @@ impl Solver {
         }
         self.monitor(model, state, kinetic)?;
         Ok((rep.max_unbalanced, kinetic))
+    }
+
+    /// Stage 2a: the spring dashpots' forces per component from the
+    /// half-step velocities, if they are on.
+    /// Whether they are on (then in `f_dash`).
+    fn dashpots(&mut self, model: &Model, state: &State) -> bool {
+        if self.dashpot_beta <= 0.0 {
+            return false;
+        }
+        forces::spring_dashpots(model, &state.v, self.dashpot_beta, &mut self.f_dash_spring);
+        forces::gather_springs(model, &self.f_dash_spring, &mut self.f_dash);
+        true
     }
 
     /// Adaptive viscous damping: `c = 2 omega` from the Rayleigh quotient,

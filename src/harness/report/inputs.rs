@@ -41,6 +41,7 @@ pub const DECLARED: &[(&str, &[&str])] = &[
     ("plastic/prandtl", &["verification/plastic/prandtl/prandtl.toml"]),
     ("plastic/gl1-hex-srm", &["verification/plastic/griffiths-lane-1/gl1-hex.toml"]),
     ("plastic/gl1-prism-srm", &["verification/plastic/griffiths-lane-1/gl1-prism.toml"]),
+    ("plastic/paper-slope-srm", &["verification/plastic/paper-slope/paper-slope.toml", "verification/cases/slope/slope.msh"]),
     ("plastic/gl1-mesh-spread", &["verification/plastic/griffiths-lane-1/gl1-hex.toml", "verification/plastic/griffiths-lane-1/gl1-prism.toml"]),
     ("slip/", &["verification/cases/slope-slip/slope-slip.toml", "verification/lem/paper-slope.toml", "tests/snapshots/slip_surface__ki_segments_cdem_springs.snap"]),
     ("slope-failure/", &["verification/cases/slope-slip/slope-slip.toml", "verification/cases/slope-slip/slope-slip-stable.toml", "tests/snapshots/progressive_slope__slope_failure_sequence.snap"]),

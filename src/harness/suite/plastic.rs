@@ -242,11 +242,25 @@ pub struct SlopeRun {
 /// converge): `srm.json` and the test say which.
 pub fn gl1_hex_row() -> Result<SlopeRun, crate::error::Error> {
     use crate::harness::registry as reg;
+    slope_row(&reg::PLASTIC_GL1_HEX, "plastic/gl1-hex-srm", reg::GL1_CHART_FS.value)
+}
+
+/// The row `plastic/paper-slope-srm` (issue 24, item 6): `cdem srm` on the
+/// paper's slope with plastic blocks and every interface breakable at the
+/// rock mass's strength, against Liu, Li & Liu's LEM; a defect without a
+/// bracket, as [`gl1_hex_row`].
+pub fn paper_slope_row() -> Result<SlopeRun, crate::error::Error> {
+    use crate::harness::registry as reg;
+    slope_row(&reg::PLASTIC_PAPER_SLOPE, "plastic/paper-slope-srm", reg::PAPER_LEM_FS.value)
+}
+
+/// `cdem srm` on `case` as the row `id` against `reference`, with a defect
+/// unless the bracket is at most [`crate::harness::suite::srm::BRACKET_WIDTH`] wide.
+fn slope_row(case: &crate::harness::registry::Case, id: &str, reference: f64) -> Result<SlopeRun, crate::error::Error> {
     let t0 = std::time::Instant::now();
-    let (result, _) = crate::drivers::run_srm(&reg::PLASTIC_GL1_HEX.scene()?, &mut |_| {})?;
-    let reference = reg::GL1_CHART_FS.value;
+    let (result, _) = crate::drivers::run_srm(&case.scene()?, &mut |_| {})?;
     let mut row =
-        reg::row("plastic/gl1-hex-srm").value(result.fs.unwrap_or(f64::NAN), reference, t0.elapsed().as_secs_f64());
+        crate::harness::registry::row(id).value(result.fs.unwrap_or(f64::NAN), reference, t0.elapsed().as_secs_f64());
     match result.bracket {
         [Some(lo), Some(hi)] if hi - lo <= crate::harness::suite::srm::BRACKET_WIDTH + 1e-12 => {}
         b => row = row.with_defect(format!("no bracket of width {}: {b:?}", crate::harness::suite::srm::BRACKET_WIDTH)),
