@@ -125,3 +125,50 @@ fn integrate_range(inp: &UpdateInput, first: usize, u: &mut [f64], v: &mut [f64]
     }
     rep
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{integrate, Masses, UpdateInput, UpdateReport, CHUNK};
+    use crate::solver::params::DampingKind;
+
+    /// The dashpots' forces accelerate the nodes, but the unbalanced force
+    /// the ratio is measured on is `f_ext - f_int` alone: a node moving at
+    /// its dashpot's terminal velocity (the two forces cancel) keeps its
+    /// velocity and still reports its unbalanced force.
+    #[test]
+    fn dashpot_forces_drive_the_update_but_are_not_unbalanced_force() {
+        let (mass, fixed) = (vec![2.0], vec![false; 3]);
+        let (f_ext, f_int) = (vec![3.0, 0.0, -1.0], vec![1.0, 0.0, 0.0]);
+        let f_dash = vec![2.0, 0.0, 0.0];
+        let step = |f_dash: Option<&[f64]>, damping: DampingKind| {
+            let inp = UpdateInput {
+                mass: Masses::Lumped(&mass),
+                fixed: &fixed,
+                f_ext: &f_ext,
+                f_int: &f_int,
+                dt: 1.0,
+                damping,
+                alpha: 0.8,
+                c: 0.0,
+                f_dash,
+            };
+            let (mut u, mut v) = (vec![0.0; 3], vec![0.5, 0.0, 0.0]);
+            let mut partial = vec![UpdateReport::default(); 3usize.div_ceil(CHUNK)];
+            let rep = integrate(&inp, &mut u, &mut v, &mut partial);
+            (rep.max_unbalanced, v)
+        };
+        for damping in [DampingKind::Viscous, DampingKind::Kinetic, DampingKind::Local] {
+            let (unbalanced, v) = step(Some(&f_dash), damping);
+            assert_eq!(unbalanced, 2.0, "{damping:?}: |f_ext - f_int| on x, the dashpot left out");
+            if damping != DampingKind::Local {
+                assert_eq!(v[0], 0.5, "{damping:?}: the dashpot cancels the unbalanced force on x");
+                assert_eq!(v[2], -0.5, "{damping:?}: z has no dashpot force");
+            }
+            let (unbalanced, v) = step(None, damping);
+            assert_eq!(unbalanced, 2.0);
+            if damping != DampingKind::Local {
+                assert_eq!(v[0], 1.5, "{damping:?}: without dashpots x accelerates by 2 / 2");
+            }
+        }
+    }
+}
