@@ -78,6 +78,7 @@ fn print_trials(label: &str, result: &cdem::drivers::SrmResult) {
 fn griffiths_and_lanes_slope_with_plastic_blocks_finds_its_factor_of_safety() {
     let run = gl1_hex_row().expect("gl1");
     print_trials("", &run.result);
+    assert!(!run.result.model.dashpots, "springs without strength: no dashpots");
     println!(
         "{}: FS {:.4} {:?} vs {:.3} (published FE {})",
         run.row.id,
@@ -107,6 +108,7 @@ fn griffiths_and_lanes_slope_with_plastic_blocks_finds_its_factor_of_safety() {
 fn the_paper_slope_with_plastic_blocks_and_breakable_interfaces_finds_its_factor_of_safety() {
     let run = paper_slope_row().expect("paper slope");
     print_trials("", &run.result);
+    assert!(run.result.model.dashpots, "plastic blocks and breakable springs: srm.json says the dashpots were on");
     println!(
         "{}: FS {:.4} {:?} vs {:.3} (Liu, Li & Liu's LEM)",
         run.row.id, run.row.ours, run.result.bracket, run.row.reference

@@ -154,6 +154,9 @@ pub struct Answer {
     pub kind: &'static str,
     /// A warning the result carries, if any.
     pub note: Option<String>,
+    /// Whether the trials' springs carried dashpots (plastic blocks and
+    /// breakable springs; docs/method.md 2.9b).
+    pub dashpots: bool,
 }
 
 /// The interlocking bias of elastic blocks that part only along their faces
@@ -176,10 +179,13 @@ impl Answer {
         // are real joints between real blocks: no bias.
         let on_mesh_faces = model.springs.interface.contains(&0);
         let every = on_mesh_faces && model.joint_state().strength.iter().all(Option::is_some);
+        let dashpots = crate::solver::has_dashpots(model);
         match (model.has_plastic_blocks(), every) {
-            (true, _) => Answer { kind: "plastic blocks", note: None },
-            (false, true) => Answer { kind: "every interface, elastic blocks", note: Some(INTERLOCKING_NOTE.into()) },
-            (false, false) => Answer { kind: "interfaces only", note: None },
+            (true, _) => Answer { kind: "plastic blocks", note: None, dashpots },
+            (false, true) => {
+                Answer { kind: "every interface, elastic blocks", note: Some(INTERLOCKING_NOTE.into()), dashpots }
+            }
+            (false, false) => Answer { kind: "interfaces only", note: None, dashpots },
         }
     }
 }

@@ -43,6 +43,12 @@ use crate::physics::spring::SpringState;
 use block_mass::BlockMass;
 use integrate::{integrate, UpdateInput};
 
+/// Whether `model`'s failure phase puts dashpots on its springs: plastic
+/// blocks and breakable springs (docs/method.md 2.9b).
+pub fn has_dashpots(model: &Model) -> bool {
+    model.has_breakable_interface() && model.has_plastic_blocks()
+}
+
 /// What changes during a run, in flat arrays indexed `3 i + d`.
 #[derive(Debug, Clone)]
 pub struct State {
@@ -208,7 +214,7 @@ impl Solver {
     pub fn set_failure(&mut self, model: &Model, on: bool) {
         self.failure = on && model.has_breakable_interface();
         self.plastic = on && model.has_plastic_blocks();
-        self.dashpot_beta = match self.failure && self.plastic {
+        self.dashpot_beta = match on && has_dashpots(model) {
             true => dashpot_beta(self.params.safety, self.dt),
             false => 0.0,
         };
