@@ -214,20 +214,11 @@ impl Solver {
     pub fn set_failure(&mut self, model: &Model, on: bool) {
         self.failure = on && model.has_breakable_interface();
         self.plastic = on && model.has_plastic_blocks();
-        self.dashpot_beta = match on && has_dashpots(model) {
-            true => dashpot_beta(self.params.safety, self.dt),
-            false => 0.0,
-        };
+        self.dashpot_beta = if on && has_dashpots(model) { dashpot_beta(self.params.safety, self.dt) } else { 0.0 };
         if self.dashpot_beta > 0.0 && self.f_dash.is_empty() {
             self.f_dash_spring = vec![[0.0; 3]; model.springs.len()];
             self.f_dash = vec![0.0; 3 * model.n_nodes()];
         }
-    }
-
-    /// Whether the spring dashpots are on (the failure phase of a model
-    /// with plastic blocks and breakable springs).
-    pub fn has_dashpots(&self) -> bool {
-        self.dashpot_beta > 0.0
     }
 
     /// Kinetic energy `v . M v / 2` with the inertial masses (J).
@@ -291,8 +282,7 @@ impl Solver {
     }
 
     /// Stage 2a: the spring dashpots' forces per component from the
-    /// half-step velocities, if they are on.
-    /// Whether they are on (then in `f_dash`).
+    /// half-step velocities, into `f_dash`; false if they are off.
     fn dashpots(&mut self, model: &Model, state: &State) -> bool {
         if self.dashpot_beta <= 0.0 {
             return false;
