@@ -45,24 +45,32 @@ fn an_unconfined_plastic_column_carries_its_uniaxial_strength_and_its_tension_cu
 }
 
 /// Prandtl's rough strip footing on a Tresca layer: the footing pressure
-/// rises to a plateau; reported against (2 + pi) c (it errs high).
+/// rises to a plateau while the footing moves, and after the hold it is
+/// within 5 % of (2 + pi) c (it errs high: references/plastic.md has the
+/// refinement study that shows the error falling with the mesh size).
 #[test]
-fn prandtls_footing_reaches_a_plateau_near_its_bearing_capacity() {
+fn prandtls_footing_carries_its_bearing_capacity() {
     let (row, curve) = prandtl_row().expect("prandtl");
     for (d, r) in &curve.points {
         println!("{d:.4} m: {:.2} kPa", -r / curve.area / 1e3);
     }
+    let moving = -curve.plateau(3);
     println!(
-        "{}: {:.2} kPa vs {:.2} kPa ({:+.2} %), flat to {:.1e}",
+        "{}: {:.2} kPa after the hold vs {:.2} kPa ({:+.2} %); {:.2} kPa while moving, flat to {:.1e}",
         row.id,
         row.ours / 1e3,
         row.reference / 1e3,
         100.0 * (row.ours / row.reference - 1.0),
+        moving / 1e3,
         curve.plateau_spread(3)
     );
     // A plateau, not a locked element: the last three readings within 0.5 %.
     assert!(curve.plateau_spread(3) < 5e-3, "no plateau: {:?}", curve.points);
+    // The hold takes the damping's share off: below the moving plateau, above the
+    // bearing capacity (a displacement-based element errs high).
+    assert!(row.ours < moving && row.ours > row.reference, "held {} moving {moving}", row.ours);
     record("plasticity_prandtl", std::slice::from_ref(&row));
+    assert!(row.passed(), "{row:?}");
 }
 
 /// One line per trial of a strength reduction.

@@ -291,9 +291,9 @@ pub const PLASTIC_COLUMN_TENSION: Case = Case {
 
 /// Prandtl's rough strip footing on a weightless Tresca layer (FLAC3D's verification problem).
 pub const PLASTIC_PRANDTL: Case = Case {
-    name: "Prandtl's strip footing, Tresca (phi = 0), 1050 hexahedra",
+    name: "Prandtl's strip footing, Tresca (phi = 0), 2310 hexahedra",
     input: "verification/plastic/prandtl/prandtl.toml",
-    checks: "the footing pressure's plateau against (2 + pi) c, reported against 5 % (tests/plasticity.rs)",
+    checks: "the footing pressure after the push and the hold against (2 + pi) c within 5 % (tests/plasticity.rs)",
     source: PLASTIC_MD,
 };
 
@@ -1048,7 +1048,7 @@ pub const ROWS: &[RowSpec] = &[
     spec("plastic/element-limit", "one plastic hexahedron, plane-strain compression, c 100 kPa, phi 30, sigma_3 0 / 100 kPa / 1 MPa", "axial stress at the limit vs sigma_3 N_phi + 2 c sqrt(N_phi) (largest error)", Asserted(TOL_PLASTIC_ELEMENT), PLASTIC_MD, "tests/plasticity.rs").with_reference(0.0),
     spec("plastic/column-compression", "plastic column 1 x 1 x 4 m (8 hexahedra), free sides, c 100 kPa, phi 30, T 50 kPa, top pushed down at a constant rate", "plateau of the axial stress (Pa) vs the uniaxial strength 2 c sqrt(N_phi)", Asserted(TOL_PLASTIC_COLUMN_COMPRESSION), PLASTIC_MD, "tests/plasticity.rs"),
     spec("plastic/column-tension", "plastic column 1 x 1 x 4 m (8 hexahedra), free sides, c 100 kPa, phi 30, T 50 kPa, top pulled up at a constant rate", "plateau of the axial stress (Pa) vs the tension cut-off T", Asserted(TOL_PLASTIC_COLUMN_TENSION), PLASTIC_MD, "tests/plasticity.rs"),
-    spec("plastic/prandtl", "Prandtl's rough strip footing, half model, 1050 hexahedra, Tresca c 0.1 MPa, pushed 60 mm at a constant rate", "plateau of the footing pressure (Pa) vs (2 + pi) c", Reported(Goal::Within(GOAL_PRANDTL)), PLASTIC_MD, "tests/plasticity.rs"),
+    spec("plastic/prandtl", "Prandtl's rough strip footing, half model, 2310 hexahedra graded to 0.06 m at the footing edge, Tresca c 0.1 MPa, pushed 60 mm at a constant rate and held", "footing pressure after the hold (Pa) vs (2 + pi) c", Asserted(GOAL_PRANDTL), PLASTIC_MD, "tests/plasticity.rs"),
     spec("plastic/gl1-hex-srm", "Griffiths & Lane 1999 ex. 1, plastic blocks, 384 structured hexahedra", "FS (strength reduction) vs Bishop & Morgenstern's chart", Asserted(TOL_PLASTIC_SLOPE), PLASTIC_MD, "tests/plasticity.rs"),
     spec("plastic/gl1-prism-srm", "Griffiths & Lane 1999 ex. 1, plastic blocks, 277 unstructured prisms", "FS (strength reduction) vs Bishop & Morgenstern's chart", Reported(Goal::Within(TOL_PLASTIC_SLOPE)), PLASTIC_MD, "tests/plasticity.rs"),
     spec("plastic/paper-slope-srm", "paper slope, plastic blocks and every interface breakable at the rock mass strength, 1000 hexahedra", "FS (strength reduction) vs Liu, Li & Liu's LEM", Asserted(TOL_PLASTIC_SLOPE), PLASTIC_MD, "tests/plasticity.rs").with_reference(PAPER_LEM_FS.value),
@@ -1606,10 +1606,14 @@ pub const PRANDTL_COHESION: f64 = 0.1e6;
 pub fn prandtl_bearing_capacity() -> f64 {
     (2.0 + std::f64::consts::PI) * PRANDTL_COHESION
 }
-/// The footing pushed 60 mm at 2.5e-6 m a step (30 readings of 800 steps);
-/// the plateau is the mean of the last 3 readings (54-60 mm). Measured to
-/// 100 mm at 2e-6 m a step: 548.6 kPa at 40 mm, 554.2 at 60, 556.3 at 100.
-pub const PRANDTL_LOADING: (f64, usize, usize) = (0.06, 30, 800);
+/// The footing pushed 60 mm at 5e-6 m a step (30 readings of 400 steps),
+/// then held there for 4,000 steps: the value is the pressure after the
+/// hold. While the footing moves, the viscous damping's share rides on the
+/// reaction (on this mesh the moving plateau is +6.5 % at 5e-6 m a step,
+/// +4.8 % at 2.5e-6 and +3.9 % at 1.25e-6); held, it relaxes away: +2.7 %
+/// after this loading, +2.9 % after the one at 2.5e-6 m a step
+/// (references/plastic.md, "Prandtl's strip footing").
+pub const PRANDTL_LOADING: (f64, usize, usize, usize) = (0.06, 30, 400, 4000);
 /// The Prandtl row's goal: 5 %, the bound for the slopes (FLAC3D's
 /// own error on its zoning was not in the copy of its manual we read).
 pub const GOAL_PRANDTL: f64 = 0.05;

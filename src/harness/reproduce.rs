@@ -148,7 +148,7 @@ fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Err
     rep.checks.push(suite::plastic::element_limit_row().0);
     progress("plastic blocks: the unconfined column in compression and tension");
     rep.checks.extend(suite::plastic::column_rows()?.into_iter().map(|r| r.0));
-    progress("plastic blocks: Prandtl's strip footing (about 2 min)");
+    progress("plastic blocks: Prandtl's strip footing (about 1 min)");
     rep.checks.push(suite::plastic::prandtl_row()?.0);
     progress("plastic blocks: Griffiths & Lane's slope by strength reduction (about 3 min)");
     let gl1 = suite::plastic::gl1_hex_row()?;

@@ -107,7 +107,10 @@ pub fn compression(strength: RockStrength, confinement: f64, steps: usize, d_axi
 /// `total / (increments x steps)` each dynamic-relaxation step, to `total`
 /// (m; they must be fixed in z by the scene), the failure phase on (plastic
 /// blocks yield); the reaction, the z sum of the internal forces on those
-/// nodes (N), is recorded every `steps` steps.
+/// nodes (N), is recorded every `steps` steps. With `hold` > 0 the group
+/// is then held at `total` for `hold` steps and the reaction read again
+/// ([`LoadCurve::held`]): the viscous damping's share of the reaction, which
+/// grows with the rate, relaxes away (Prandtl's footing; references/plastic.md).
 ///
 /// The rate matters: moving the group by a whole increment at once (1 mm a
 /// jump, 400 steps to settle) left the column's plateau 12 % below the
@@ -121,6 +124,10 @@ pub struct LoadCurve {
     /// The loaded group's area, from the plastic blocks' x-y extent at its
     /// nodes (m^2): the reaction over it is the mean stress.
     pub area: f64,
+    /// The reaction after the group was held at `total` for the hold's
+    /// steps (N; None without a hold): the plateau with the damping's
+    /// share of it relaxed away.
+    pub held: Option<f64>,
     pub seconds: f64,
 }
 
@@ -150,6 +157,7 @@ pub fn load_curve(
     total: f64,
     increments: usize,
     steps: usize,
+    hold: usize,
 ) -> Result<LoadCurve, crate::error::Error> {
     use crate::error::SceneError;
     let t0 = std::time::Instant::now();
@@ -181,7 +189,14 @@ pub fn load_curve(
         let reaction: f64 = nodes.iter().map(|&i| state.f_int[3 * i + 2]).sum();
         points.push((total * k as f64 / increments as f64, reaction));
     }
-    Ok(LoadCurve { points, area, seconds: t0.elapsed().as_secs_f64() })
+    let held = (hold > 0).then(|| -> Result<f64, crate::error::Error> {
+        for _ in 0..hold {
+            solver.step(&model, &mut state)?;
+        }
+        Ok(nodes.iter().map(|&i| state.f_int[3 * i + 2]).sum())
+    });
+    let held = held.transpose()?;
+    Ok(LoadCurve { points, area, held, seconds: t0.elapsed().as_secs_f64() })
 }
 
 /// The row `plastic/element-limit`: the largest relative error of
@@ -210,7 +225,7 @@ pub fn column_rows() -> Result<Vec<(crate::harness::report::Check, LoadCurve)>, 
     ];
     let mut rows = Vec::new();
     for (case, sign, limit, id) in cases {
-        let curve = load_curve(&case.scene()?, "top", sign * total, increments, steps)?;
+        let curve = load_curve(&case.scene()?, "top", sign * total, increments, steps, 0)?;
         let row = reg::row(id).value(sign * curve.plateau(5), limit, curve.seconds);
         rows.push((row, curve));
     }
@@ -222,9 +237,10 @@ pub fn column_rows() -> Result<Vec<(crate::harness::report::Check, LoadCurve)>, 
 /// `(2 + pi) c`, and the curve.
 pub fn prandtl_row() -> Result<(crate::harness::report::Check, LoadCurve), crate::error::Error> {
     use crate::harness::registry as reg;
-    let (total, increments, steps) = reg::PRANDTL_LOADING;
-    let curve = load_curve(&reg::PLASTIC_PRANDTL.scene()?, "footing", -total, increments, steps)?;
-    let row = reg::row("plastic/prandtl").value(-curve.plateau(3), reg::prandtl_bearing_capacity(), curve.seconds);
+    let (total, increments, steps, hold) = reg::PRANDTL_LOADING;
+    let curve = load_curve(&reg::PLASTIC_PRANDTL.scene()?, "footing", -total, increments, steps, hold)?;
+    let held = curve.held.map_or(f64::NAN, |r| -r / curve.area);
+    let row = reg::row("plastic/prandtl").value(held, reg::prandtl_bearing_capacity(), curve.seconds);
     Ok((row, curve))
 }
 
