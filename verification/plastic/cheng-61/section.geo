@@ -15,7 +15,7 @@ If (!Exists(refine))
 EndIf
 H = 16.846;
 t = 2.1;          // slab thickness (y), about one element
-h = 2.1;          // element size of the unstructured shapes
+h = 2.1 / refine; // element size of the unstructured shapes (2.1 m at refine = 1)
 x0 = -0.057; x1 = 54.324; zb = 0.073;
 has_left = 1;
 gx[] = {-0.057, 10.118, 20.011, 26.003, 31.939, 34.878, 42.905, 54.324};
