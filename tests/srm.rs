@@ -71,4 +71,8 @@ fn the_interlocking_note_is_for_breakable_mesh_faces_only() {
     assert_eq!((joints.kind, joints.note.is_some()), ("every interface, elastic blocks", true));
     let plastic = answer("verification/plastic/cheng-61/c61-hex.toml");
     assert_eq!((plastic.kind, plastic.note.is_some()), ("plastic blocks", false));
+    // Spring dashpots (docs/method.md 2.9b): on where yielding spreads through the
+    // mass (every mesh face breakable), off on real joints and on springs that
+    // cannot break.
+    assert_eq!((plane.dashpots, joints.dashpots, plastic.dashpots), (false, true, false));
 }

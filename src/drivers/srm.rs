@@ -154,8 +154,8 @@ pub struct Answer {
     pub kind: &'static str,
     /// A warning the result carries, if any.
     pub note: Option<String>,
-    /// Whether the trials' springs carried dashpots (plastic blocks and
-    /// breakable springs; docs/method.md 2.9b).
+    /// Whether the trials' springs carried dashpots
+    /// ([`crate::solver::has_dashpots`]; docs/method.md 2.9b).
     pub dashpots: bool,
 }
 
@@ -173,12 +173,9 @@ pub const INTERLOCKING_NOTE: &str = "every element interface is breakable while 
 impl Answer {
     /// The answer of `model`'s strength reduction.
     pub fn of(model: &Model) -> Self {
-        // The bias is that of the mesh's own faces: the default joints
-        // (interface 0, `[joints]`) carry springs, and every spring can
-        // break. Springs only on named interface groups (`[joints]` merged)
-        // are real joints between real blocks: no bias.
-        let on_mesh_faces = model.springs.interface.contains(&0);
-        let every = on_mesh_faces && model.joint_state().strength.iter().all(Option::is_some);
+        // The bias is that of the mesh's own faces, every one breakable;
+        // real joints between real blocks carry none.
+        let every = model.every_face_breakable();
         let dashpots = crate::solver::has_dashpots(model);
         match (model.has_plastic_blocks(), every) {
             (true, _) => Answer { kind: "plastic blocks", note: None, dashpots },

@@ -220,6 +220,14 @@ impl Model {
         self.interfaces.iter().any(|i| i.props.strength.is_some())
     }
 
+    /// Whether the mesh's own faces carry springs that can all break: the
+    /// default joints (interface 0, `[joints]`) carry springs and every
+    /// spring has a strength. Springs only on named interface groups
+    /// (`[joints]` merged) are real joints between real blocks.
+    pub fn every_face_breakable(&self) -> bool {
+        self.springs.interface.contains(&0) && self.joint_state().strength.iter().all(Option::is_some)
+    }
+
     /// What each element's plastic tetrahedra look like now (None without
     /// plastic blocks; an elastic element has yielded nothing and its
     /// condensed stress).

@@ -39,8 +39,8 @@
 //! `tan(phi) K_n` between normal and shear increments. It is left to the
 //! solver's energy monitor, which has not fired on any case with block masses
 //! in phase 2 (the slip-surface slope, the stable slope, Wulong, the block on
-//! a plane). The spring dashpots of a failure phase with plastic blocks
-//! (`physics::damping::dashpot_beta`) take half of the room this bound
+//! a plane). The spring dashpots of a failure phase (`solver::has_dashpots`;
+//! `physics::damping::dashpot_beta`) take half of the room this bound
 //! leaves (`Omega <= 2 safety`) for a stiffness-proportional damping.
 //! The blocks also couple the inertia of copies that have
 //! separated: that changes the fictitious path of the relaxation, not its

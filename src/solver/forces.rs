@@ -179,7 +179,8 @@ pub fn spring_forces_with_failure(
         });
 }
 
-/// The spring dashpots (failure phase with plastic blocks): each spring's
+/// The spring dashpots (a failure phase that has them,
+/// [`crate::solver::has_dashpots`]): each spring's
 /// damping force on its node `a` from the velocities `v`
 /// ([`crate::physics::damping::spring_dashpot`]).
 pub fn spring_dashpots(model: &Model, v: &[f64], beta: f64, f_dash: &mut [[f64; 3]]) {

@@ -43,10 +43,12 @@ use crate::physics::spring::SpringState;
 use block_mass::BlockMass;
 use integrate::{integrate, UpdateInput};
 
-/// Whether `model`'s failure phase puts dashpots on its springs: plastic
-/// blocks and breakable springs (docs/method.md 2.9b).
+/// Whether `model`'s failure phase puts dashpots on its springs: breakable
+/// springs and either plastic blocks or every mesh face breakable, the two
+/// models in which yielding spreads through the whole mass (docs/method.md
+/// 2.9b).
 pub fn has_dashpots(model: &Model) -> bool {
-    model.has_breakable_interface() && model.has_plastic_blocks()
+    model.has_breakable_interface() && (model.has_plastic_blocks() || model.every_face_breakable())
 }
 
 /// What changes during a run, in flat arrays indexed `3 i + d`.
@@ -118,7 +120,7 @@ pub struct Solver {
     /// tetrahedron. Only true when the model has plastic blocks.
     plastic: bool,
     /// The spring dashpots' `beta` (s; 0: none): on in the failure phase of
-    /// a model with plastic blocks and breakable springs
+    /// a model that [`has_dashpots`]
     /// ([`crate::physics::damping::dashpot_beta`]).
     dashpot_beta: f64,
     /// Scratch: each spring's dashpot force on its node `a`, and their sum
