@@ -38,7 +38,7 @@ enum Command {
     /// failure through the rock mass and along the breakable interfaces: a slope whose slip
     /// surface nobody drew. Elastic blocks with breakable interfaces (a drawn slip surface, real
     /// joints) fail only along those interfaces. Elastic blocks with every element interface
-    /// breakable interlock: that FS is biased high (+4 % to +74 % on six published homogeneous
+    /// breakable interlock: that FS is biased high (+22 % to +73 % on six published homogeneous
     /// slopes, references/srm.md), and srm says so.
     #[command(verbatim_doc_comment)]
     Srm {

@@ -165,8 +165,8 @@ pub struct Answer {
 /// six published homogeneous slopes (references/srm.md, "Homogeneous
 /// slopes: interfaces only against plastic blocks").
 pub const INTERLOCKING_NOTE: &str = "every element interface is breakable while the blocks are elastic: the factor of \
-     safety carries the interlocking bias of blocks that can part only along their faces, measured at +4 % to +74 % \
-     (unconservative) on six published homogeneous slopes and mesh-dependent (+30 % hexahedra, +38 % prisms, +53 % \
+     safety carries the interlocking bias of blocks that can part only along their faces, measured at +22 % to +73 % \
+     (unconservative) on six published homogeneous slopes and mesh-dependent (+29 % hexahedra, +38 % prisms, +52 % \
      tetrahedra on Griffiths & Lane's slope; references/srm.md); for a rock mass whose failure must find its own \
      way, give the blocks a [[material]] strength";
 
