@@ -7,10 +7,10 @@
 //!   displacement (adaptive, Underwood 1983);
 //! - kinetic: no force; velocities are zeroed at each peak of kinetic energy;
 //! - spring dashpots (failure phase with plastic blocks or every mesh face
-//!   breakable, on top of the viscous damping): `f_d = beta K_spring (v_b - v_a)` per spring,
-//!   stiffness proportional, so it damps the stiff relative modes of the
-//!   node copies that mass-proportional damping leaves undamped
-//!   ([`spring_dashpot`], [`dashpot_beta`]).
+//!   breakable, on top of the viscous damping): `f_d = beta K_spring
+//!   (v_b - v_a)` per spring, stiffness proportional, so it damps the stiff
+//!   relative modes of the node copies that mass-proportional damping
+//!   leaves undamped ([`spring_dashpot`], [`dashpot_beta`]).
 
 /// Local damping force for one component.
 #[inline]

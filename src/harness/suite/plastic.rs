@@ -178,6 +178,7 @@ pub fn load_curve(
     let mut state = crate::solver::State::new(&model);
     let mut points = Vec::with_capacity(increments);
     let rate = total / (increments * steps) as f64;
+    let reaction = |state: &crate::solver::State| -> f64 { nodes.iter().map(|&i| state.f_int[3 * i + 2]).sum() };
     for k in 1..=increments {
         for s in 1..=steps {
             let uz = rate * ((k - 1) * steps + s) as f64;
@@ -186,16 +187,12 @@ pub fn load_curve(
             }
             solver.step(&model, &mut state)?;
         }
-        let reaction: f64 = nodes.iter().map(|&i| state.f_int[3 * i + 2]).sum();
-        points.push((total * k as f64 / increments as f64, reaction));
+        points.push((total * k as f64 / increments as f64, reaction(&state)));
     }
-    let held = (hold > 0).then(|| -> Result<f64, crate::error::Error> {
-        for _ in 0..hold {
-            solver.step(&model, &mut state)?;
-        }
-        Ok(nodes.iter().map(|&i| state.f_int[3 * i + 2]).sum())
-    });
-    let held = held.transpose()?;
+    for _ in 0..hold {
+        solver.step(&model, &mut state)?;
+    }
+    let held = (hold > 0).then(|| reaction(&state));
     Ok(LoadCurve { points, area, held, seconds: t0.elapsed().as_secs_f64() })
 }
 
