@@ -146,6 +146,7 @@ pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
         gather,
         mesh_coords: coords,
         water,
+        smoothing: spec.smoothing,
     })
 }
 

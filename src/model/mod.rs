@@ -19,7 +19,7 @@ use crate::mesh::CellKind;
 use crate::physics::element::{element_stress, packed_entry, packed_len};
 use crate::physics::joint::{JointProps, JointState};
 use crate::physics::material::Material;
-use crate::physics::plastic::{cell_plastic, CellPlastic, PlasticCells, RockState, Volumetric};
+use crate::physics::plastic::{cell_plastic, CellPlastic, PlasticCells, RockState, Smoothing, Volumetric};
 use crate::physics::spring::Springs;
 use crate::physics::tet_operator::TetOperators;
 use crate::summary::PlasticSummary;
@@ -165,6 +165,9 @@ pub struct Model {
     pub mesh_coords: Vec<[f64; 3]>,
     /// The scene's `[water]` (its forces are in `f_ext`), if any.
     pub water: Option<water::WaterModel>,
+    /// The plastic prisms' and tetrahedra's smoothing weight
+    /// (`[failure] smoothing`, [`crate::physics::plastic::NODE_SMOOTHING`]).
+    pub smoothing: f64,
 }
 
 impl Model {
@@ -207,7 +210,7 @@ impl Model {
     /// state a run starts from.
     pub fn rock_state(&self) -> RockState {
         let given = self.materials.iter().map(|m| m.law.strength()).collect();
-        RockState::new(given, self.elements.len(), self.mesh_coords.len())
+        RockState::new(given, self.elements.len(), self.mesh_coords.len(), self.smoothing)
     }
 
     /// Whether any element's material yields (has a strength).
@@ -248,6 +251,11 @@ impl Model {
                             el.corners(e),
                             u,
                             match self.plastic.nodal[e] {
+                                true if rock.smoothing > 0.0 => Volumetric::Smoothed(Smoothing {
+                                    volumetric: rock.volumetric[e],
+                                    deviatoric: rock.used_strain[e],
+                                    alpha: rock.smoothing,
+                                }),
                                 true => Volumetric::Nodal(rock.volumetric[e]),
                                 false => Volumetric::Cell,
                             },

@@ -25,6 +25,8 @@ pub struct ModelSpec<'a> {
     pub gravity: [f64; 3],
     /// Pore water, if any.
     pub water: Option<&'a WaterSection>,
+    /// `[failure] smoothing` (the plastic prisms' and tetrahedra's `alpha`).
+    pub smoothing: f64,
 }
 
 #[derive(Debug, Clone, Default, Deserialize)]

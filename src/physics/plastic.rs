@@ -36,6 +36,16 @@ use super::mohr_coulomb::{compliance, MohrCoulomb, RockStrength, Yield};
 use super::tet_operator::{corner_forces, point_displacements, scaled_gradients, TetTopology};
 use crate::mesh::shape::{CellKind, MAX_POINTS};
 
+/// The default weight `alpha` of the node-smoothed deviatoric strain of
+/// plastic prisms and tetrahedra (`[failure] smoothing`,
+/// [`Volumetric::Smoothed`]): 0.6, the value Nguyen-Thoi & Nguyen-Xuan
+/// (2010) recommend for plane problems in the alpha-FEM of Liu, Nguyen-Thoi
+/// & Lam (2008), which blends the over-stiff compatible strain (0) with the
+/// over-soft node-smoothed one (1). Our smoothed strain is not theirs (it is
+/// the average over a cell's vertices of the vertex averages), so the value
+/// was checked, not fitted, on elastic compliance: references/plastic.md.
+pub const NODE_SMOOTHING: f64 = 0.6;
+
 /// Most sub-tetrahedra of a cell (a hexahedron's 24).
 pub const MAX_TETS: usize = 24;
 
@@ -107,6 +117,25 @@ pub enum Volumetric {
     /// per cell still locks: P1/P0); the caller applies the pressure force
     /// ([`add_pressure_force`]) from the vertices' mean pressures.
     Nodal(f64),
+    /// As `Nodal`, and the deviatoric strain smoothed too: each
+    /// tetrahedron's deviatoric strain is shifted by
+    /// `alpha (d - dev(eps_cell))`, `d` the average over the cell's
+    /// vertices of their cells' mean deviatoric strains and `eps_cell` the
+    /// cell's own volume-averaged strain (a blend of the cell's strain and a
+    /// node-based smoothed one, Liu et al.'s alpha-FEM). The caller applies
+    /// the pressure and smoothing forces ([`add_stress_force`]).
+    Smoothed(Smoothing),
+}
+
+/// The vertex-averaged strains a [`Volumetric::Smoothed`] cell uses.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Smoothing {
+    /// The averaged volumetric strain.
+    pub volumetric: f64,
+    /// The averaged deviatoric strain (Voigt, engineering shear).
+    pub deviatoric: [f64; 6],
+    /// The weight of the smoothed deviatoric strain, 0 to 1.
+    pub alpha: f64,
 }
 
 impl Volumetric {
@@ -115,6 +144,19 @@ impl Volumetric {
         match self {
             Volumetric::Cell => own,
             Volumetric::Nodal(e) => e,
+            Volumetric::Smoothed(s) => s.volumetric,
+        }
+    }
+
+    /// The deviatoric shift `alpha (d - dev(eps_cell))` given the cell's own
+    /// mean strain (None unless smoothed).
+    fn shift(self, tets: &[TetB], eps: &[[f64; 6]; MAX_TETS]) -> Option<[f64; 6]> {
+        match self {
+            Volumetric::Smoothed(s) if s.alpha > 0.0 => {
+                let own = deviatoric(mean_strain(tets, eps));
+                Some([0, 1, 2, 3, 4, 5].map(|i| s.alpha * (s.deviatoric[i] - own[i])))
+            }
+            _ => None,
         }
     }
 }
@@ -125,6 +167,46 @@ impl Volumetric {
 pub struct CellStep {
     pub volumetric: f64,
     pub pressure: f64,
+    /// A smoothed cell's `alpha dev(sigma_cell)` (Pa, Voigt), the
+    /// volume-averaged deviatoric stress its vertices average; zero otherwise.
+    pub deviatoric: [f64; 6],
+}
+
+/// The deviatoric part of a Voigt strain or stress.
+pub fn deviatoric(x: [f64; 6]) -> [f64; 6] {
+    let m = (x[0] + x[1] + x[2]) / 3.0;
+    [x[0] - m, x[1] - m, x[2] - m, x[3], x[4], x[5]]
+}
+
+/// The volume-averaged strain of a cell (Voigt, engineering shear).
+pub fn cell_mean_strain(topo: &TetTopology, tets: &[TetB], nodes: &[u32], u: &[f64]) -> [f64; 6] {
+    let (eps, _) = tet_strains(topo, tets, &point_displacements(topo, nodes, u));
+    mean_strain(tets, &eps)
+}
+
+fn mean_strain(tets: &[TetB], eps: &[[f64; 6]; MAX_TETS]) -> [f64; 6] {
+    let (mut m, mut v) = ([0.0; 6], 0.0);
+    for (op, e) in tets.iter().zip(eps) {
+        let vt = op.sqrt_v * op.sqrt_v;
+        for i in 0..6 {
+            m[i] += vt * e[i];
+        }
+        v += vt;
+    }
+    m.map(|x| x / v)
+}
+
+/// Adds `V S g_c` to the corner forces `f_e`: `S` a stress (Pa, Voigt) the
+/// cell carries through its volume-averaged strain, `volume` its volume,
+/// `g_c` its volume-averaged corner gradients (the virtual work of
+/// `V S : eps_cell`).
+pub fn add_stress_force(grad: &[[f64; 3]], volume: f64, s: [f64; 6], f_e: &mut [f64]) {
+    let t = [[s[0], s[5], s[4]], [s[5], s[1], s[3]], [s[4], s[3], s[2]]];
+    for (fc, g) in f_e.chunks_exact_mut(3).zip(grad) {
+        for i in 0..3 {
+            fc[i] += volume * (t[i][0] * g[0] + t[i][1] * g[1] + t[i][2] * g[2]);
+        }
+    }
 }
 
 /// The volume-averaged volumetric strain of a cell, `sum_t V_t tr(eps_t) / V`.
@@ -168,10 +250,12 @@ pub fn plastic_element_force(
     let d = point_displacements(topo, nodes, u);
     let (eps, own) = tet_strains(topo, tets, &d);
     let e = volumetric.value(own);
+    let shift = volumetric.shift(tets, &eps);
     let mut f = [[0.0; 3]; MAX_POINTS];
     let (mut pressure, mut volume) = (0.0, 0.0); // sum_t V_t p_t, sum_t V_t
+    let mut dev = [0.0; 6]; // sum_t V_t dev(sigma_t)
     for (((t, op), eps), h) in topo.tets.iter().zip(tets).zip(&eps).zip(hist.iter_mut()) {
-        let strain = mixed(*eps, e);
+        let strain = shifted(mixed(*eps, e), shift);
         let elastic = [0, 1, 2, 3, 4, 5].map(|i| strain[i] - h.eps_p[i]);
         let trial = lame.stress_voigt(elastic);
         let (sigma, now) = match pore {
@@ -192,6 +276,12 @@ pub fn plastic_element_force(
         let p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
         pressure += op.sqrt_v * op.sqrt_v * p;
         volume += op.sqrt_v * op.sqrt_v;
+        if shift.is_some() {
+            let vt = op.sqrt_v * op.sqrt_v;
+            for (i, x) in deviatoric(sigma).into_iter().enumerate() {
+                dev[i] += vt * x;
+            }
+        }
         // V_t dev(sigma) grad N_k = sqrt(V_t) dev(sigma) b_k.
         let s = op.sqrt_v;
         let (sxx, syy, szz) = (s * (sigma[0] - p), s * (sigma[1] - p), s * (sigma[2] - p));
@@ -205,10 +295,28 @@ pub fn plastic_element_force(
         }
     }
     corner_forces(topo, &mut f, f_e);
-    if volumetric == Volumetric::Cell {
-        add_pressure_force(grad, pressure, f_e);
+    let mut deviatoric = [0.0; 6];
+    match volumetric {
+        Volumetric::Cell => add_pressure_force(grad, pressure, f_e),
+        Volumetric::Nodal(_) => {}
+        Volumetric::Smoothed(s) => {
+            // The cell's own share of the smoothed strain, `-alpha dev(eps_cell)`:
+            // its virtual work `-alpha V dev(sigma_cell) : eps_cell`.
+            if shift.is_some() {
+                deviatoric = dev.map(|x| s.alpha * x / volume);
+                add_stress_force(grad, -volume, deviatoric, f_e);
+            }
+        }
     }
-    CellStep { volumetric: e, pressure: pressure / volume }
+    CellStep { volumetric: e, pressure: pressure / volume, deviatoric }
+}
+
+/// `eps + shift` (None: `eps`).
+fn shifted(eps: [f64; 6], shift: Option<[f64; 6]>) -> [f64; 6] {
+    match shift {
+        Some(d) => [0, 1, 2, 3, 4, 5].map(|i| eps[i] + d[i]),
+        None => eps,
+    }
 }
 
 /// The elastic screen of a hexahedral plastic cell (one pressure per cell,
@@ -387,11 +495,12 @@ pub fn cell_plastic(
     let d = point_displacements(topo, nodes, u);
     let (eps, own) = tet_strains(topo, tets, &d);
     let e = volumetric.value(own);
+    let shift = volumetric.shift(tets, &eps);
     let mut out = CellPlastic::default();
     let mut v = 0.0;
     for ((op, eps), h) in tets.iter().zip(&eps).zip(hist) {
         let vt = op.sqrt_v * op.sqrt_v;
-        let strain = mixed(*eps, e);
+        let strain = shifted(mixed(*eps, e), shift);
         let sigma = lame.stress_voigt([0, 1, 2, 3, 4, 5].map(|i| strain[i] - h.eps_p[i]));
         for i in 0..6 {
             out.stress[i] += vt * sigma[i];
@@ -441,6 +550,17 @@ pub struct RockState {
     /// its nodally averaged cells (scratch of each step).
     pub vertex_strain: Vec<f64>,
     pub vertex_pressure: Vec<f64>,
+    /// The weight `alpha` of the smoothed deviatoric strain of the nodally
+    /// averaged cells ([`Volumetric::Smoothed`]; 0: [`Volumetric::Nodal`]).
+    pub smoothing: f64,
+    /// Per element (smoothing only): its mean deviatoric strain, the
+    /// vertex-averaged one it used, and its `alpha dev(sigma_cell)`; per
+    /// mesh vertex the averages of the first and the last (scratch).
+    pub cell_strain: Vec<[f64; 6]>,
+    pub used_strain: Vec<[f64; 6]>,
+    pub cell_stress: Vec<[f64; 6]>,
+    pub vertex_dev_strain: Vec<[f64; 6]>,
+    pub vertex_dev_stress: Vec<[f64; 6]>,
     /// Per element: its elastic screen (used by cells with one pressure).
     pub screen: Vec<Screen>,
 }
@@ -448,7 +568,7 @@ pub struct RockState {
 impl RockState {
     /// The state of a model with these material strengths and `n_elements`
     /// elements, every tetrahedron elastic.
-    pub fn new(given: Vec<Option<RockStrength>>, n_elements: usize, n_vertices: usize) -> Self {
+    pub fn new(given: Vec<Option<RockStrength>>, n_elements: usize, n_vertices: usize, smoothing: f64) -> Self {
         let surface = given.iter().map(|s| s.map(|s| MohrCoulomb::of(&s))).collect();
         let any = given.iter().any(Option::is_some);
         let (ne, nv) = if any { (n_elements, n_vertices) } else { (0, 0) };
@@ -460,6 +580,12 @@ impl RockState {
             pressure: vec![0.0; ne],
             vertex_strain: vec![0.0; nv],
             vertex_pressure: vec![0.0; nv],
+            smoothing,
+            cell_strain: vec![[0.0; 6]; ne],
+            used_strain: vec![[0.0; 6]; ne],
+            cell_stress: vec![[0.0; 6]; ne],
+            vertex_dev_strain: vec![[0.0; 6]; nv],
+            vertex_dev_stress: vec![[0.0; 6]; nv],
             screen: vec![Screen::default(); ne],
         }
     }

@@ -193,11 +193,25 @@ pub struct FailureParams {
     /// 4,752 (58,580 before the displacement-rate rule; references/performance.md,
     /// rows `perf/phase2/*`).
     pub block_mass: bool,
+    /// Plastic prisms and tetrahedra: the weight `alpha` of the
+    /// node-smoothed deviatoric strain in their tetrahedra's strain
+    /// ([`crate::physics::plastic::Volumetric::Smoothed`]), in [0, 1).
+    /// Default [`crate::physics::plastic::NODE_SMOOTHING`] (0.6); 0: each
+    /// cell's own deviatoric strain (their volumetric strain is the nodal
+    /// average either way). Hexahedra do not use it.
+    pub smoothing: f64,
 }
 
 impl Default for FailureParams {
     fn default() -> Self {
-        Self { max_steps: None, stage_every: 500, sliding_displacement: None, sliding_travel: None, block_mass: true }
+        Self {
+            max_steps: None,
+            stage_every: 500,
+            sliding_displacement: None,
+            sliding_travel: None,
+            block_mass: true,
+            smoothing: crate::physics::plastic::NODE_SMOOTHING,
+        }
     }
 }
 
@@ -208,6 +222,9 @@ impl FailureParams {
         }
         if self.stage_every == 0 {
             return Err(SceneError::invalid("failure.stage_every", "must be at least 1"));
+        }
+        if !(0.0..1.0).contains(&self.smoothing) {
+            return Err(SceneError::invalid("failure.smoothing", "must be in [0, 1)"));
         }
         if let Some(d) = self.sliding_displacement {
             if !(d.is_finite() && d > 0.0) {
@@ -269,6 +286,7 @@ impl Scene {
             boundary: &self.boundary,
             gravity: self.loads.gravity,
             water: self.water.as_ref(),
+            smoothing: self.failure.as_ref().map_or(crate::physics::plastic::NODE_SMOOTHING, |f| f.smoothing),
         }
     }
 

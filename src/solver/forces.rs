@@ -15,7 +15,8 @@ use crate::physics::element::element_force;
 use crate::physics::joint::{JointLaw, JointState};
 use crate::physics::mohr_coulomb::Yield;
 use crate::physics::plastic::{
-    add_pressure_force, cell_volumetric_strain, plastic_element_force, screen_radius, RockState, Volumetric,
+    add_pressure_force, add_stress_force, cell_mean_strain, cell_volumetric_strain, deviatoric, plastic_element_force,
+    screen_radius, RockState, Smoothing, Volumetric,
 };
 use crate::physics::spring::{relative_displacement, spring_contact_force, SpringState};
 
@@ -54,7 +55,23 @@ pub fn element_forces(model: &Model, u: &[f64], f_elem: &mut [f64]) {
 pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_elem: &mut [f64]) {
     let el = &model.elements;
     let cells = &model.plastic;
-    let RockState { surface, history, volumetric, pressure, vertex_strain, vertex_pressure, screen, .. } = rock;
+    let RockState {
+        surface,
+        history,
+        volumetric,
+        pressure,
+        vertex_strain,
+        vertex_pressure,
+        screen,
+        smoothing,
+        cell_strain,
+        used_strain,
+        cell_stress,
+        vertex_dev_strain,
+        vertex_dev_stress,
+        ..
+    } = rock;
+    let alpha = *smoothing;
     let surface = &*surface;
     let vertex_of = |e: usize| el.corners(e).iter().map(|&n| model.mesh_node[n as usize] as usize);
     let weight = |e: usize| el.volume[e] / el.corners(e).len() as f64;
@@ -71,6 +88,30 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
             0.0
         }
     };
+    let vertex_mean6 = |values: &[[f64; 6]], a: usize| {
+        let (mut s, mut w) = ([0.0; 6], 0.0);
+        for &e in cells.vertex(a) {
+            let e = e as usize;
+            for i in 0..6 {
+                s[i] += weight(e) * values[e][i];
+            }
+            w += weight(e);
+        }
+        if w > 0.0 {
+            s.map(|x| x / w)
+        } else {
+            [0.0; 6]
+        }
+    };
+    let cell_mean6 = |values: &[[f64; 6]], e: usize| {
+        let mut s = [0.0; 6];
+        for a in vertex_of(e) {
+            for i in 0..6 {
+                s[i] += values[a][i];
+            }
+        }
+        s.map(|x| x / el.corners(e).len() as f64)
+    };
     let nodal = cells.any_nodal();
     if nodal {
         volumetric.par_iter_mut().with_min_len(MIN_LEN).enumerate().filter(|(e, _)| cells.nodal[*e]).for_each(
@@ -81,16 +122,33 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
         let theta = &*volumetric;
         vertex_strain.par_iter_mut().with_min_len(MIN_LEN).enumerate().for_each(|(a, j)| *j = vertex_mean(theta, a));
     }
+    let smoothed = nodal && alpha > 0.0;
+    if smoothed {
+        cell_strain.par_iter_mut().with_min_len(MIN_LEN).enumerate().filter(|(e, _)| cells.nodal[*e]).for_each(
+            |(e, m)| *m = deviatoric(cell_mean_strain(cells.topology(el.kind[e]), cells.tets(e), el.corners(e), u)),
+        );
+        let cs = &*cell_strain;
+        vertex_dev_strain.par_iter_mut().with_min_len(MIN_LEN).enumerate().for_each(|(a, d)| *d = vertex_mean6(cs, a));
+        let vd = &*vertex_dev_strain;
+        used_strain
+            .par_iter_mut()
+            .with_min_len(MIN_LEN)
+            .enumerate()
+            .filter(|(e, _)| cells.nodal[*e])
+            .for_each(|(e, m)| *m = cell_mean6(vd, e));
+    }
     let vertex_strain = &*vertex_strain;
+    let used_strain = &*used_strain;
     f_elem
         .par_chunks_mut(ELEMENT_SLOT)
         .zip(history.par_iter_mut())
         .zip(volumetric.par_iter_mut())
         .zip(pressure.par_iter_mut())
         .zip(screen.par_iter_mut())
+        .zip(cell_stress.par_iter_mut())
         .with_min_len(MIN_LEN / 16)
         .enumerate()
-        .for_each(|(e, ((((f_e, hist), theta), p), screen))| {
+        .for_each(|(e, (((((f_e, hist), theta), p), screen), cs))| {
             let nodes = el.corners(e);
             let f_e = &mut f_e[..3 * nodes.len()];
             let material = el.material[e] as usize;
@@ -99,7 +157,13 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
                 Some(mc) => {
                     let mode = match cells.nodal[e] {
                         true => {
-                            Volumetric::Nodal(vertex_of(e).map(|a| vertex_strain[a]).sum::<f64>() / nodes.len() as f64)
+                            let j = vertex_of(e).map(|a| vertex_strain[a]).sum::<f64>() / nodes.len() as f64;
+                            match smoothed {
+                                true => {
+                                    Volumetric::Smoothed(Smoothing { volumetric: j, deviatoric: used_strain[e], alpha })
+                                }
+                                false => Volumetric::Nodal(j),
+                            }
                         }
                         false => Volumetric::Cell,
                     };
@@ -109,7 +173,7 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
                     let pore = model.water.as_ref().map_or(0.0, |w| w.element_pressure[e]);
                     let step =
                         plastic_element_force(topo, tets, &el.grad[r], lame, mc, nodes, u, mode, pore, hist, f_e);
-                    (*theta, *p) = (step.volumetric, step.pressure);
+                    (*theta, *p, *cs) = (step.volumetric, step.pressure, step.deviatoric);
                     let g = cells.sensitivity(e);
                     if !cells.nodal[e] && hist[..tets.len()].iter().all(|h| h.now == Yield::Elastic) {
                         let radius = screen_radius(topo, tets, lame, mc, g, nodes, u, pore, hist);
@@ -129,6 +193,15 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
             .enumerate()
             .for_each(|(a, q)| *q = vertex_mean(pressure, a));
         let vertex_pressure = &*vertex_pressure;
+        if smoothed {
+            let cs = &*cell_stress;
+            vertex_dev_stress
+                .par_iter_mut()
+                .with_min_len(MIN_LEN)
+                .enumerate()
+                .for_each(|(a, d)| *d = vertex_mean6(cs, a));
+        }
+        let vds = &*vertex_dev_stress;
         f_elem
             .par_chunks_mut(ELEMENT_SLOT)
             .with_min_len(MIN_LEN)
@@ -138,7 +211,10 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
                 let nodes = el.corners(e);
                 let mean = vertex_of(e).map(|a| vertex_pressure[a]).sum::<f64>() / nodes.len() as f64;
                 let r = el.offset[e]..el.offset[e + 1];
-                add_pressure_force(&el.grad[r], el.volume[e] * mean, &mut f_e[..3 * nodes.len()]);
+                add_pressure_force(&el.grad[r.clone()], el.volume[e] * mean, &mut f_e[..3 * nodes.len()]);
+                if smoothed {
+                    add_stress_force(&el.grad[r], el.volume[e], cell_mean6(vds, e), &mut f_e[..3 * nodes.len()]);
+                }
             });
     }
 }

@@ -281,32 +281,29 @@ fn slope_row(case: &crate::harness::registry::Case, id: &str, reference: f64) ->
     Ok(SlopeRun { result, row })
 }
 
-/// The rows `plastic/gl1-prism-srm` and `plastic/gl1-mesh-spread`: `cdem
-/// srm` on the same slope meshed with unstructured prisms, against the
-/// chart (reported against the hexahedra's 5 %), and its spread from the
-/// hexahedra's factor `hex` (reported against issue 24's 3 %). Both carry a
-/// defect without a bracket.
-pub fn gl1_prism_rows(hex: &SlopeRun) -> Result<(SlopeRun, crate::harness::report::Check), crate::error::Error> {
+/// The rows `plastic/gl1-prism-srm`, `plastic/gl1-tet-srm` and
+/// `plastic/gl1-mesh-spread`: `cdem srm` on the same slope meshed with
+/// unstructured prisms and tetrahedra (node-smoothed, docs/method.md 2.9b),
+/// each against the chart within the hexahedra's 5 %, and the spread
+/// `(max - min) / min` of the three shapes' factors (issue 24's 3 %). A
+/// shape without a bracket gives its row and the spread a defect.
+pub fn gl1_shape_rows(
+    hex: &SlopeRun,
+) -> Result<(SlopeRun, SlopeRun, crate::harness::report::Check), crate::error::Error> {
     use crate::harness::registry as reg;
-    let t0 = std::time::Instant::now();
-    let (result, _) = crate::drivers::run_srm(&reg::PLASTIC_GL1_PRISM.scene()?, &mut |_| {})?;
-    let seconds = t0.elapsed().as_secs_f64();
-    let fs = result.fs.unwrap_or(f64::NAN);
-    let mut row = reg::row("plastic/gl1-prism-srm").value(fs, reg::GL1_CHART_FS.value, seconds);
-    let spread = (fs - hex.row.ours).abs() / hex.row.ours;
-    let mut spread_row =
-        reg::row("plastic/gl1-mesh-spread").value(spread, reg::GOAL_MESH_SPREAD, seconds).with_note(format!(
-            "prisms {fs:.4} {:?}, hexahedra {:.4} {:?}: constant-strain cells (prisms with their centres averaged) \
-             are stiffer than the hexahedra (references/plastic.md)",
-            result.bracket, hex.row.ours, hex.result.bracket
-        ));
-    match result.bracket {
-        [Some(lo), Some(hi)] if hi - lo <= crate::harness::suite::srm::BRACKET_WIDTH + 1e-12 => {}
-        b => {
-            let why = format!("no bracket of width {}: {b:?}", crate::harness::suite::srm::BRACKET_WIDTH);
-            row = row.with_defect(why.clone());
-            spread_row = spread_row.with_defect(why);
-        }
+    let prism = slope_row(&reg::PLASTIC_GL1_PRISM, "plastic/gl1-prism-srm", reg::GL1_CHART_FS.value)?;
+    let tet = slope_row(&reg::PLASTIC_GL1_TET, "plastic/gl1-tet-srm", reg::GL1_CHART_FS.value)?;
+    let fs = [hex.row.ours, prism.row.ours, tet.row.ours];
+    let (lo, hi) =
+        (fs.iter().copied().fold(f64::INFINITY, f64::min), fs.iter().copied().fold(f64::NEG_INFINITY, f64::max));
+    let spread = (hi - lo) / lo;
+    let seconds = prism.row.seconds + tet.row.seconds;
+    let mut spread_row = reg::row("plastic/gl1-mesh-spread").value(spread, 0.0, seconds).with_note(format!(
+        "hexahedra {:.4} {:?}, prisms {:.4} {:?}, tetrahedra {:.4} {:?} (references/plastic.md)",
+        hex.row.ours, hex.result.bracket, prism.row.ours, prism.result.bracket, tet.row.ours, tet.result.bracket
+    ));
+    if let Some(why) = [&hex.row, &prism.row, &tet.row].iter().find_map(|r| r.defect.clone()) {
+        spread_row = spread_row.with_defect(why);
     }
-    Ok((SlopeRun { result, row }, spread_row))
+    Ok((prism, tet, spread_row))
 }
