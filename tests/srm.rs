@@ -71,6 +71,19 @@ fn the_interlocking_note_is_for_breakable_mesh_faces_only() {
     assert_eq!((joints.kind, joints.note.is_some()), ("every interface, elastic blocks", true));
     let plastic = answer("verification/plastic/cheng-61/c61-hex.toml");
     assert_eq!((plastic.kind, plastic.note.is_some()), ("plastic blocks", false));
+    // Plastic prisms with breakable interfaces average across them (a note);
+    // with springs that cannot break, not.
+    let text = std::fs::read_to_string("verification/plastic/cheng-61/c61-prism.toml").unwrap();
+    let dir = std::path::Path::new("verification/plastic/cheng-61");
+    let breakable = text.replace(
+        "thickness = 1.0",
+        "thickness = 1.0\nstrength = { tensile = 0.0, cohesion = 5.0e3, friction_angle = 30.0, softening = \"ductile\" }",
+    );
+    let of = |text: &str| {
+        Answer::of(&cdem::drivers::build_model(&cdem::scene::Scene::from_toml(text, dir, dir).unwrap()).unwrap())
+    };
+    assert_eq!(of(&text).note, None);
+    assert_eq!(of(&breakable).note.as_deref(), Some(cdem::drivers::srm::NODAL_ACROSS_CRACKS_NOTE));
     // Spring dashpots (docs/method.md 2.9b): on where yielding spreads through the
     // mass (every mesh face breakable), off on real joints and on springs that
     // cannot break.

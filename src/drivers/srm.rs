@@ -170,6 +170,14 @@ pub const INTERLOCKING_NOTE: &str = "every element interface is breakable while 
      tetrahedra on Griffiths & Lane's slope; references/srm.md); for a rock mass whose failure must find its own \
      way, give the blocks a [[material]] strength";
 
+/// Plastic prisms and tetrahedra average their strains over the cells at
+/// each mesh vertex, across interfaces whether their springs hold or not
+/// (docs/method.md 2.9b, "Stiff triangles"): with breakable interfaces they
+/// also average across a crack once it opens.
+pub const NODAL_ACROSS_CRACKS_NOTE: &str = "plastic prisms or tetrahedra with breakable interfaces: their \
+     volumetric and smoothed deviatoric strains are averaged over the cells at each mesh vertex, across an interface \
+     once it opens too (docs/method.md 2.9b); hexahedra average nothing across cells";
+
 impl Answer {
     /// The answer of `model`'s strength reduction.
     pub fn of(model: &Model) -> Self {
@@ -178,7 +186,11 @@ impl Answer {
         let every = model.every_face_breakable();
         let dashpots = crate::solver::has_dashpots(model);
         match (model.has_plastic_blocks(), every) {
-            (true, _) => Answer { kind: "plastic blocks", note: None, dashpots },
+            (true, _) => {
+                let breakable = model.joint_state().strength.iter().any(Option::is_some);
+                let note = (breakable && model.plastic.any_nodal()).then(|| NODAL_ACROSS_CRACKS_NOTE.into());
+                Answer { kind: "plastic blocks", note, dashpots }
+            }
             (false, true) => {
                 Answer { kind: "every interface, elastic blocks", note: Some(INTERLOCKING_NOTE.into()), dashpots }
             }

@@ -40,18 +40,25 @@ pub fn element_forces(model: &Model, u: &[f64], f_elem: &mut [f64]) {
 /// share the volumetric strain of their mesh vertices
 /// ([`Volumetric::Nodal`]), in five passes, each parallel with a fixed sum
 /// order:
-/// 1. each such cell's own volumetric strain `theta_e`;
+/// 1. each such cell's own volumetric strain `theta_e` (smoothed: and its
+///    mean deviatoric strain `dev(eps_e)`);
 /// 2. each vertex's average `J_a = sum_e w_e theta_e / sum_e w_e` over its
-///    cells, `w_e = V_e / n_e`;
+///    cells, `w_e = V_e / n_e` (smoothed: and the same average of
+///    `dev(eps_e)`, then each cell's mean of its vertices' averages `d_e`);
 /// 3. every element's force (a nodal cell uses `mean_(a in e) J_a` and
-///    leaves its pressure force out; a hexahedron whose armed
+///    leaves its pressure force out; a smoothed one shifts its deviatoric
+///    strain by `alpha (d_e - dev(eps_e))` and applies its own share of the
+///    shift's force; a hexahedron whose armed
 ///    [`Screen`](crate::physics::plastic::Screen) holds takes its fast path
 ///    `K_e u_e - f_p`, and one whose full pass leaves every tetrahedron
 ///    elastic arms it);
-/// 4. each vertex's mean stress `P_a = sum_e w_e p_e / sum_e w_e`;
+/// 4. each vertex's mean stress `P_a = sum_e w_e p_e / sum_e w_e`
+///    (smoothed: and of `alpha dev(sigma_e)`);
 /// 5. each nodal cell's pressure force `V_e mean_(a in e) P_a g_c`, the
 ///    virtual work of step 2's average (Bonet & Burton's average nodal
-///    pressure tetrahedron; FLAC's nodal mixed discretization).
+///    pressure tetrahedron; FLAC's nodal mixed discretization), and
+///    smoothed, the same of step 4's deviatoric average (docs/method.md
+///    2.9b, "Stiff triangles").
 pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_elem: &mut [f64]) {
     let el = &model.elements;
     let cells = &model.plastic;
