@@ -26,6 +26,10 @@
 //!    [`mixed_stiffness`](super::element::mixed_stiffness) that phase 1 uses for the same elements, so the
 //!    elastic state is the plastic element's own. A single tetrahedron (a
 //!    `Tet4` cell) has nothing to average with and keeps its own strain.
+//!    Prisms and tetrahedra average over their mesh vertices instead
+//!    ([`Volumetric::Nodal`]), and their deviatoric strain, nearly one
+//!    constant per cell and too stiff on unstructured meshes, is blended
+//!    with a node-smoothed one ([`Volumetric::Smoothed`], [`NODE_SMOOTHING`]).
 //!
 //! Per tetrahedron the state is the plastic strain and the yield flag:
 //! `sigma_t = D (eps_t' - eps_t^p)`, returned by the Mohr-Coulomb return
