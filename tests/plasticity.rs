@@ -310,7 +310,7 @@ fn the_elastic_screen_lets_no_tetrahedron_yield_inside_its_radius() {
 /// the forces are not the cells' own (`smoothing = 0`).
 #[test]
 fn the_smoothed_tetrahedra_forces_are_the_virtual_work_of_their_strain() {
-    use cdem::physics::plastic::{cell_mean_strain, deviatoric};
+    use cdem::physics::plastic::{cell_strains, deviatoric};
     use cdem::solver::forces::{element_forces_plastic, gather};
     let text = std::fs::read_to_string("verification/plastic/griffiths-lane-1/gl1-tet.toml").unwrap();
     // Strong enough that nothing yields: the elastic operator alone.
@@ -347,7 +347,7 @@ fn the_smoothed_tetrahedra_forces_are_the_virtual_work_of_their_strain() {
     let (lambda, mu) = (young * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)), young / (2.0 * (1.0 + nu)));
     let topo = model.plastic.topology(cdem::mesh::shape::CellKind::Tet4);
     let mean: Vec<[f64; 6]> =
-        (0..el.len()).map(|e| cell_mean_strain(topo, model.plastic.tets(e), el.corners(e), &u)).collect();
+        (0..el.len()).map(|e| cell_strains(topo, model.plastic.tets(e), el.corners(e), &u).1).collect();
     let n_vertices = model.mesh_coords.len();
     let (mut sum, mut weight) = (vec![[0.0; 7]; n_vertices], vec![0.0; n_vertices]);
     for (e, m) in mean.iter().enumerate() {

@@ -19,7 +19,7 @@ use crate::mesh::CellKind;
 use crate::physics::element::{element_stress, packed_entry, packed_len};
 use crate::physics::joint::{JointProps, JointState};
 use crate::physics::material::Material;
-use crate::physics::plastic::{cell_plastic, CellPlastic, PlasticCells, RockState, Smoothing, Volumetric};
+use crate::physics::plastic::{cell_plastic, CellPlastic, PlasticCells, RockState, Volumetric};
 use crate::physics::spring::Springs;
 use crate::physics::tet_operator::TetOperators;
 use crate::summary::PlasticSummary;
@@ -251,12 +251,9 @@ impl Model {
                             el.corners(e),
                             u,
                             match self.plastic.nodal[e] {
-                                true if rock.smoothing > 0.0 => Volumetric::Smoothed(Smoothing {
-                                    volumetric: rock.volumetric[e],
-                                    deviatoric: rock.used_strain[e],
-                                    alpha: rock.smoothing,
-                                }),
-                                true => Volumetric::Nodal(rock.volumetric[e]),
+                                true => {
+                                    Volumetric::at_vertices(rock.volumetric[e], rock.used_strain[e], rock.smoothing)
+                                }
                                 false => Volumetric::Cell,
                             },
                             &rock.history[e],

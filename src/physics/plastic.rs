@@ -143,6 +143,16 @@ pub struct Smoothing {
 }
 
 impl Volumetric {
+    /// The mode of a nodally averaged cell: [`Volumetric::Nodal`] with the
+    /// vertex-averaged volumetric strain `volumetric`, or with `alpha > 0`
+    /// [`Volumetric::Smoothed`] with the vertex-averaged `deviatoric` too.
+    pub fn at_vertices(volumetric: f64, deviatoric: [f64; 6], alpha: f64) -> Self {
+        match alpha > 0.0 {
+            true => Volumetric::Smoothed(Smoothing { volumetric, deviatoric, alpha }),
+            false => Volumetric::Nodal(volumetric),
+        }
+    }
+
     /// The volumetric strain the tetrahedra share, given the cell's own.
     fn value(self, own: f64) -> f64 {
         match self {
@@ -182,10 +192,12 @@ pub fn deviatoric(x: [f64; 6]) -> [f64; 6] {
     [x[0] - m, x[1] - m, x[2] - m, x[3], x[4], x[5]]
 }
 
-/// The volume-averaged strain of a cell (Voigt, engineering shear).
-pub fn cell_mean_strain(topo: &TetTopology, tets: &[TetB], nodes: &[u32], u: &[f64]) -> [f64; 6] {
-    let (eps, _) = tet_strains(topo, tets, &point_displacements(topo, nodes, u));
-    mean_strain(tets, &eps)
+/// A cell's volume-averaged volumetric strain (as
+/// [`cell_volumetric_strain`]) and volume-averaged strain (Voigt,
+/// engineering shear), from one evaluation of its tetrahedra's strains.
+pub fn cell_strains(topo: &TetTopology, tets: &[TetB], nodes: &[u32], u: &[f64]) -> (f64, [f64; 6]) {
+    let (eps, e) = tet_strains(topo, tets, &point_displacements(topo, nodes, u));
+    (e, mean_strain(tets, &eps))
 }
 
 fn mean_strain(tets: &[TetB], eps: &[[f64; 6]; MAX_TETS]) -> [f64; 6] {

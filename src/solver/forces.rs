@@ -15,8 +15,8 @@ use crate::physics::element::element_force;
 use crate::physics::joint::{JointLaw, JointState};
 use crate::physics::mohr_coulomb::Yield;
 use crate::physics::plastic::{
-    add_pressure_force, add_stress_force, cell_mean_strain, cell_volumetric_strain, deviatoric, plastic_element_force,
-    screen_radius, RockState, Smoothing, Volumetric,
+    add_pressure_force, add_stress_force, cell_strains, cell_volumetric_strain, deviatoric, plastic_element_force,
+    screen_radius, PlasticCells, RockState, Volumetric,
 };
 use crate::physics::spring::{relative_displacement, spring_contact_force, SpringState};
 
@@ -82,34 +82,8 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
     let surface = &*surface;
     let vertex_of = |e: usize| el.corners(e).iter().map(|&n| model.mesh_node[n as usize] as usize);
     let weight = |e: usize| el.volume[e] / el.corners(e).len() as f64;
-    let vertex_mean = |values: &[f64], a: usize| {
-        let (mut s, mut w) = (0.0, 0.0);
-        for &e in cells.vertex(a) {
-            let e = e as usize;
-            s += weight(e) * values[e];
-            w += weight(e);
-        }
-        if w > 0.0 {
-            s / w
-        } else {
-            0.0
-        }
-    };
-    let vertex_mean6 = |values: &[[f64; 6]], a: usize| {
-        let (mut s, mut w) = ([0.0; 6], 0.0);
-        for &e in cells.vertex(a) {
-            let e = e as usize;
-            for i in 0..6 {
-                s[i] += weight(e) * values[e][i];
-            }
-            w += weight(e);
-        }
-        if w > 0.0 {
-            s.map(|x| x / w)
-        } else {
-            [0.0; 6]
-        }
-    };
+    let vertex_mean = |values: &[f64], a: usize| vertex_average(cells, weight, a, |e| [values[e]])[0];
+    let vertex_mean6 = |values: &[[f64; 6]], a: usize| vertex_average(cells, weight, a, |e| values[e]);
     let cell_mean6 = |values: &[[f64; 6]], e: usize| {
         let mut s = [0.0; 6];
         for a in vertex_of(e) {
@@ -120,20 +94,31 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
         s.map(|x| x / el.corners(e).len() as f64)
     };
     let nodal = cells.any_nodal();
-    if nodal {
+    let smoothed = nodal && alpha > 0.0;
+    if smoothed {
+        // One evaluation of each cell's strains gives both averages.
+        volumetric
+            .par_iter_mut()
+            .zip(cell_strain.par_iter_mut())
+            .with_min_len(MIN_LEN)
+            .enumerate()
+            .filter(|(e, _)| cells.nodal[*e])
+            .for_each(|(e, (theta, m))| {
+                let (v, mean) = cell_strains(cells.topology(el.kind[e]), cells.tets(e), el.corners(e), u);
+                (*theta, *m) = (v, deviatoric(mean));
+            });
+    } else if nodal {
         volumetric.par_iter_mut().with_min_len(MIN_LEN).enumerate().filter(|(e, _)| cells.nodal[*e]).for_each(
             |(e, theta)| {
                 *theta = cell_volumetric_strain(cells.topology(el.kind[e]), cells.tets(e), el.corners(e), u);
             },
         );
+    }
+    if nodal {
         let theta = &*volumetric;
         vertex_strain.par_iter_mut().with_min_len(MIN_LEN).enumerate().for_each(|(a, j)| *j = vertex_mean(theta, a));
     }
-    let smoothed = nodal && alpha > 0.0;
     if smoothed {
-        cell_strain.par_iter_mut().with_min_len(MIN_LEN).enumerate().filter(|(e, _)| cells.nodal[*e]).for_each(
-            |(e, m)| *m = deviatoric(cell_mean_strain(cells.topology(el.kind[e]), cells.tets(e), el.corners(e), u)),
-        );
         let cs = &*cell_strain;
         vertex_dev_strain.par_iter_mut().with_min_len(MIN_LEN).enumerate().for_each(|(a, d)| *d = vertex_mean6(cs, a));
         let vd = &*vertex_dev_strain;
@@ -165,12 +150,7 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
                     let mode = match cells.nodal[e] {
                         true => {
                             let j = vertex_of(e).map(|a| vertex_strain[a]).sum::<f64>() / nodes.len() as f64;
-                            match smoothed {
-                                true => {
-                                    Volumetric::Smoothed(Smoothing { volumetric: j, deviatoric: used_strain[e], alpha })
-                                }
-                                false => Volumetric::Nodal(j),
-                            }
+                            Volumetric::at_vertices(j, used_strain[e], alpha)
                         }
                         false => Volumetric::Cell,
                     };
@@ -223,6 +203,30 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
                     add_stress_force(&el.grad[r], el.volume[e], cell_mean6(vds, e), &mut f_e[..3 * nodes.len()]);
                 }
             });
+    }
+}
+
+/// The average `sum_e w_e x_e / sum_e w_e` of `value` over the nodally
+/// averaged cells at mesh vertex `a` (0 where there are none), in the
+/// cells' fixed order.
+fn vertex_average<const N: usize>(
+    cells: &PlasticCells,
+    weight: impl Fn(usize) -> f64,
+    a: usize,
+    value: impl Fn(usize) -> [f64; N],
+) -> [f64; N] {
+    let (mut s, mut w) = ([0.0; N], 0.0);
+    for &e in cells.vertex(a) {
+        let (e, x) = (e as usize, value(e as usize));
+        for i in 0..N {
+            s[i] += weight(e) * x[i];
+        }
+        w += weight(e);
+    }
+    if w > 0.0 {
+        s.map(|x| x / w)
+    } else {
+        [0.0; N]
     }
 }
 
