@@ -28,7 +28,8 @@ impl Lame {
     pub fn stress_voigt(&self, eps: [f64; 6]) -> [f64; 6] {
         let Lame { lambda, mu } = *self;
         let tr = eps[0] + eps[1] + eps[2];
-        [0, 1, 2, 3, 4, 5].map(|i| if i < 3 { lambda * tr + 2.0 * mu * eps[i] } else { mu * eps[i] })
+        let l = lambda * tr;
+        [l + 2.0 * mu * eps[0], l + 2.0 * mu * eps[1], l + 2.0 * mu * eps[2], mu * eps[3], mu * eps[4], mu * eps[5]]
     }
 
     /// Constrained (P-wave) modulus `M = lambda + 2 mu`.

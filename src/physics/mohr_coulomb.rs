@@ -142,26 +142,35 @@ impl MohrCoulomb {
     /// A cheap sufficient test that `sigma` (Voigt, tension positive) is
     /// inside the surface, from its invariants: with `p` the mean stress and
     /// `q = sqrt(J2)`, `s1 - s3 <= 2 q`, `|s2 - p| <= q / sqrt(3)` and
-    /// `s1 <= p + 2 q / sqrt(3)` bound the main plane and the cut-off.
+    /// `s1 <= p + 2 q / sqrt(3)` bound the main plane and the cut-off:
+    /// inside if `(2 + sin phi / sqrt 3) q < k - 2 p sin phi` and
+    /// `2 q / sqrt 3 < T - p`, tested squared (no square root or division
+    /// on the hot path; a filter only: what it lets through the exact test
+    /// below would return unchanged too).
     fn surely_elastic(&self, sigma: &[f64; 6]) -> bool {
-        let p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
+        const THIRD: f64 = 1.0 / 3.0;
+        const FRAC_1_SQRT_3: f64 = 0.577_350_269_189_625_8;
+        let p = (sigma[0] + sigma[1] + sigma[2]) * THIRD;
         let d = [sigma[0] - p, sigma[1] - p, sigma[2] - p];
         let j2 = 0.5 * (d[0] * d[0] + d[1] * d[1] + d[2] * d[2])
             + sigma[3] * sigma[3]
             + sigma[4] * sigma[4]
             + sigma[5] * sigma[5];
-        let q = j2.sqrt();
-        let shear = 2.0 * q + (2.0 * p + q / 3f64.sqrt()) * self.sin_phi - self.k;
-        let tension = p + 2.0 * q / 3f64.sqrt() - self.tensile;
-        shear < 0.0 && tension < 0.0
+        let a = 2.0 + self.sin_phi * FRAC_1_SQRT_3;
+        let shear = self.k - 2.0 * p * self.sin_phi;
+        let tension = self.tensile - p;
+        shear > 0.0 && tension > 0.0 && a * a * j2 < shear * shear && 4.0 * THIRD * j2 < tension * tension
     }
 
     /// The return onto the main plane alone (the active set `[0]`, by far
     /// the most frequent), in closed form: `s = s* - dg D n` with
-    /// `dg = (m . s* - k) / (m . D n)`; None if the result violates another
-    /// plane (an edge, the apex or the cut-off is active: the general search
-    /// decides). The same return as `return_to(.., &[0], ..)`.
-    fn main_plane_return(&self, lame: Lame, s: [f64; 3], excess: f64, tol: f64) -> Option<[f64; 3]> {
+    /// `dg = (m . s* - k) / (m . D n)`. The same return as
+    /// `return_to(.., &[0], ..)`. If the result violates another plane (an
+    /// edge, the apex or the cut-off is active), the error names the edge
+    /// to try first: the shear plane the result violates more (2: it left
+    /// the sextant across `s1 = s2`, 1: across `s2 = s3`; de Souza Neto's
+    /// Box 8.5 picks the edge the same way).
+    fn main_plane_return(&self, lame: Lame, s: [f64; 3], excess: f64, tol: f64) -> Result<[f64; 3], usize> {
         let Lame { lambda, mu } = lame;
         let (sf, sp) = (self.sin_phi, self.sin_psi);
         let (n1, n3) = (1.0 + sp, -(1.0 - sp));
@@ -170,12 +179,15 @@ impl MohrCoulomb {
             [(lambda + 2.0 * mu) * n1 + lambda * n3, lambda * n1 + lambda * n3, lambda * n1 + (lambda + 2.0 * mu) * n3];
         let denom = (1.0 + sf) * dn[0] - (1.0 - sf) * dn[2];
         if !(denom > 0.0) {
-            return None;
+            return Err(1);
         }
         let dg = excess / denom;
         let r = [s[0] - dg * dn[0], s[1] - dg * dn[1], s[2] - dg * dn[2]];
-        let admissible = (1..PLANES).all(|p| self.excess(p, r) <= tol);
-        admissible.then_some(r)
+        match (1..PLANES).all(|p| self.excess(p, r) <= tol) {
+            true => Ok(r),
+            false if self.excess(2, r) > self.excess(1, r) => Err(2),
+            false => Err(1),
+        }
     }
 
     /// The return onto the main plane and shear plane `q` (1: the edge
@@ -205,7 +217,7 @@ impl MohrCoulomb {
         if g.iter().any(|&x| x < -1e-12 * largest) {
             return None;
         }
-        let r = [0, 1, 2].map(|i| s[i] - g[0] * d0[i] - g[1] * dq[i]);
+        let r = [s[0] - g[0] * d0[0] - g[1] * dq[0], s[1] - g[0] * d0[1] - g[1] * dq[1], s[2] - g[0] * d0[2] - g[1] * dq[2]];
         let admissible = (1..PLANES).filter(|&p| p != q).all(|p| self.excess(p, r) <= tol);
         admissible.then_some(r)
     }
@@ -229,15 +241,19 @@ impl MohrCoulomb {
         if main.max(values[0] - self.tensile) <= tol {
             return (trial, Yield::Elastic);
         }
+        let mut edges = [1, 2];
         if main > tol {
-            if let Some(r) = self.main_plane_return(lame, values, main, tol) {
-                return (spectral_update(&trial, values, r), Yield::Shear);
+            match self.main_plane_return(lame, values, main, tol) {
+                Ok(r) => return (spectral_update(&trial, values, r), Yield::Shear),
+                Err(first) => edges = [first, 3 - first],
             }
         }
         // Below the cut-off the general search's sets [0] and [3] decline,
-        // and it tries the two edges next: in closed form here.
+        // and it tries the two edges next: in closed form here, the edge
+        // the main-plane return pointed to first (at most one of the two
+        // is admissible).
         if values[0] <= self.tensile {
-            for q in [1, 2] {
+            for q in edges {
                 if let Some(r) = self.edge_return(lame, values, q, tol) {
                     return (spectral_update(&trial, values, r), Yield::Shear);
                 }
@@ -387,8 +403,8 @@ fn spectral_update(sigma: &[f64; 6], old: [f64; 3], new: [f64; 3]) -> [f64; 6] {
         xx * xy + xy * yy + xz * yz,
     ];
     // (A - a I)(A - b I) / w.
-    let quad = |a: f64, b: f64, w: f64| [0, 1, 2, 3, 4, 5].map(|i| (a2[i] - (a + b) * sigma[i] + a * b * I[i]) / w);
-    let lin = |a: f64, w: f64| [0, 1, 2, 3, 4, 5].map(|i| (sigma[i] - a * I[i]) / w);
+    let quad = |a: f64, b: f64, w: f64| six(|i| (a2[i] - (a + b) * sigma[i] + a * b * I[i]) / w);
+    let lin = |a: f64, w: f64| six(|i| (sigma[i] - a * I[i]) / w);
     let (g12, g23) = (old[0] - old[1], old[1] - old[2]);
     if g12 <= 1e-6 * spread {
         // P_12 = (A - s_3 I) / (s_1 - s_3), P_3 = I - P_12.
@@ -435,6 +451,13 @@ fn from_principal(s: [f64; 3], axes: &Matrix3<f64>) -> [f64; 6] {
     out
 }
 
+/// `[f(0), .., f(5)]`, written out: the hot kernels' arrays without
+/// `array::map`'s closure calls, which the compiler does not always inline.
+#[inline(always)]
+pub fn six(f: impl Fn(usize) -> f64) -> [f64; 6] {
+    [f(0), f(1), f(2), f(3), f(4), f(5)]
+}
+
 fn dot3(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
@@ -478,7 +501,8 @@ pub fn compliance(lame: Lame, sigma: [f64; 6]) -> [f64; 6] {
     let tr = sigma[0] + sigma[1] + sigma[2];
     // D^-1 sigma = (sigma - lambda / (3 lambda + 2 mu) tr I) / (2 mu).
     let a = lambda / (3.0 * lambda + 2.0 * mu);
-    [0, 1, 2, 3, 4, 5].map(|i| if i < 3 { (sigma[i] - a * tr) / (2.0 * mu) } else { sigma[i] / mu })
+    let (at, g2) = (a * tr, 2.0 * mu);
+    [(sigma[0] - at) / g2, (sigma[1] - at) / g2, (sigma[2] - at) / g2, sigma[3] / mu, sigma[4] / mu, sigma[5] / mu]
 }
 
 #[cfg(test)]
@@ -685,7 +709,7 @@ mod tests {
                 continue;
             }
             let general = return_to(&planes_at(&mc, l, v), &[0], v, tol).map(|(r, _)| r);
-            let fast = mc.main_plane_return(l, v, main, tol);
+            let fast = mc.main_plane_return(l, v, main, tol).ok();
             assert_eq!(fast, general, "{v:?}");
             answered += usize::from(fast.is_some());
         }

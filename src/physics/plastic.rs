@@ -36,7 +36,7 @@
 //! mapping each step, `eps_t^p += D^-1 (sigma_trial - sigma_t)`.
 
 use super::elasticity::Lame;
-use super::mohr_coulomb::{compliance, MohrCoulomb, RockStrength, Yield};
+use super::mohr_coulomb::{compliance, six, MohrCoulomb, RockStrength, Yield};
 use super::tet_operator::{corner_forces, point_displacements, scaled_gradients, TetTopology};
 use crate::mesh::shape::{CellKind, MAX_POINTS};
 
@@ -84,6 +84,14 @@ pub fn plastic_operator(kind: CellKind, corners: &[[f64; 3]]) -> Vec<TetB> {
 /// displacements `d`, and the cell's volume-averaged volumetric strain `e`.
 fn tet_strains(topo: &TetTopology, tets: &[TetB], d: &[[f64; 3]; MAX_POINTS]) -> ([[f64; 6]; MAX_TETS], f64) {
     let mut eps = [[0.0; 6]; MAX_TETS];
+    let e = tet_strains_into(topo, tets, d, &mut eps);
+    (eps, e)
+}
+
+/// [`tet_strains`] into `eps` (the element pass's buffer: no copy of the
+/// array on return); returns `e`.
+#[inline(always)]
+fn tet_strains_into(topo: &TetTopology, tets: &[TetB], d: &[[f64; 3]; MAX_POINTS], eps: &mut [[f64; 6]; MAX_TETS]) -> f64 {
     let (mut ve, mut v) = (0.0, 0.0);
     for ((t, op), e) in topo.tets.iter().zip(tets).zip(eps.iter_mut()) {
         let mut h = [[0.0; 3]; 3]; // sqrt(V_t) du_i/dx_j
@@ -96,12 +104,13 @@ fn tet_strains(topo: &TetTopology, tets: &[TetB], d: &[[f64; 3]; MAX_POINTS]) ->
             }
         }
         let w = 1.0 / op.sqrt_v;
-        *e = [h[0][0], h[1][1], h[2][2], h[1][2] + h[2][1], h[0][2] + h[2][0], h[0][1] + h[1][0]].map(|x| w * x);
+        let g = [h[0][0], h[1][1], h[2][2], h[1][2] + h[2][1], h[0][2] + h[2][0], h[0][1] + h[1][0]];
+        *e = six(|i| w * g[i]);
         let vt = op.sqrt_v * op.sqrt_v;
         ve += vt * (e[0] + e[1] + e[2]);
         v += vt;
     }
-    (eps, ve / v)
+    ve / v
 }
 
 /// The mixed strain `dev(eps) + (e / 3) I`.
@@ -168,7 +177,7 @@ impl Volumetric {
         match self {
             Volumetric::Smoothed(s) if s.alpha > 0.0 => {
                 let own = deviatoric(mean_strain(tets, eps));
-                Some([0, 1, 2, 3, 4, 5].map(|i| s.alpha * (s.deviatoric[i] - own[i])))
+                Some(six(|i| s.alpha * (s.deviatoric[i] - own[i])))
             }
             _ => None,
         }
@@ -264,7 +273,8 @@ pub fn plastic_element_force(
     f_e: &mut [f64],
 ) -> CellStep {
     let d = point_displacements(topo, nodes, u);
-    let (eps, own) = tet_strains(topo, tets, &d);
+    let mut eps = [[0.0; 6]; MAX_TETS];
+    let own = tet_strains_into(topo, tets, &d, &mut eps);
     let e = volumetric.value(own);
     let shift = volumetric.shift(tets, &eps);
     let mut f = [[0.0; 3]; MAX_POINTS];
@@ -272,7 +282,7 @@ pub fn plastic_element_force(
     let mut dev = [0.0; 6]; // sum_t V_t dev(sigma_t)
     for (((t, op), eps), h) in topo.tets.iter().zip(tets).zip(&eps).zip(hist.iter_mut()) {
         let strain = shifted(mixed(*eps, e), shift);
-        let elastic = [0, 1, 2, 3, 4, 5].map(|i| strain[i] - h.eps_p[i]);
+        let elastic = six(|i| strain[i] - h.eps_p[i]);
         let trial = lame.stress_voigt(elastic);
         let (sigma, now) = match pore {
             0.0 => surface.return_map(lame, trial),
@@ -282,7 +292,7 @@ pub fn plastic_element_force(
             }
         };
         if now != Yield::Elastic {
-            let dep = compliance(lame, [0, 1, 2, 3, 4, 5].map(|i| trial[i] - sigma[i]));
+            let dep = compliance(lame, six(|i| trial[i] - sigma[i]));
             for i in 0..6 {
                 h.eps_p[i] += dep[i];
             }
@@ -330,7 +340,7 @@ pub fn plastic_element_force(
 /// `eps + shift` (None: `eps`).
 fn shifted(eps: [f64; 6], shift: Option<[f64; 6]>) -> [f64; 6] {
     match shift {
-        Some(d) => [0, 1, 2, 3, 4, 5].map(|i| eps[i] + d[i]),
+        Some(d) => six(|i| eps[i] + d[i]),
         None => eps,
     }
 }
@@ -465,7 +475,7 @@ pub fn screen_radius(
     let mut radius = f64::INFINITY;
     for ((eps, h), &g) in eps[..tets.len()].iter().zip(hist).zip(sensitivity) {
         let strain = mixed(*eps, e);
-        let sigma = lame.stress_voigt([0, 1, 2, 3, 4, 5].map(|i| strain[i] - h.eps_p[i]));
+        let sigma = lame.stress_voigt(six(|i| strain[i] - h.eps_p[i]));
         let margin = surface.margin(&shift_normal(sigma, pore));
         if !(margin > 0.0) {
             return 0.0;
@@ -517,7 +527,7 @@ pub fn cell_plastic(
     for ((op, eps), h) in tets.iter().zip(&eps).zip(hist) {
         let vt = op.sqrt_v * op.sqrt_v;
         let strain = shifted(mixed(*eps, e), shift);
-        let sigma = lame.stress_voigt([0, 1, 2, 3, 4, 5].map(|i| strain[i] - h.eps_p[i]));
+        let sigma = lame.stress_voigt(six(|i| strain[i] - h.eps_p[i]));
         for i in 0..6 {
             out.stress[i] += vt * sigma[i];
         }
