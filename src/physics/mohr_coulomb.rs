@@ -217,7 +217,11 @@ impl MohrCoulomb {
         if g.iter().any(|&x| x < -1e-12 * largest) {
             return None;
         }
-        let r = [s[0] - g[0] * d0[0] - g[1] * dq[0], s[1] - g[0] * d0[1] - g[1] * dq[1], s[2] - g[0] * d0[2] - g[1] * dq[2]];
+        let r = [
+            s[0] - g[0] * d0[0] - g[1] * dq[0],
+            s[1] - g[0] * d0[1] - g[1] * dq[1],
+            s[2] - g[0] * d0[2] - g[1] * dq[2],
+        ];
         let admissible = (1..PLANES).filter(|&p| p != q).all(|p| self.excess(p, r) <= tol);
         admissible.then_some(r)
     }

@@ -91,7 +91,12 @@ fn tet_strains(topo: &TetTopology, tets: &[TetB], d: &[[f64; 3]; MAX_POINTS]) ->
 /// [`tet_strains`] into `eps` (the element pass's buffer: no copy of the
 /// array on return); returns `e`.
 #[inline(always)]
-fn tet_strains_into(topo: &TetTopology, tets: &[TetB], d: &[[f64; 3]; MAX_POINTS], eps: &mut [[f64; 6]; MAX_TETS]) -> f64 {
+fn tet_strains_into(
+    topo: &TetTopology,
+    tets: &[TetB],
+    d: &[[f64; 3]; MAX_POINTS],
+    eps: &mut [[f64; 6]; MAX_TETS],
+) -> f64 {
     let (mut ve, mut v) = (0.0, 0.0);
     for ((t, op), e) in topo.tets.iter().zip(tets).zip(eps.iter_mut()) {
         let mut h = [[0.0; 3]; 3]; // sqrt(V_t) du_i/dx_j
