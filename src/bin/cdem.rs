@@ -119,8 +119,9 @@ enum Command {
         /// in the same run. Without it the LEM ratio uses pySlope's recorded time (references/pyslope.json).
         #[arg(long, value_name = "PYTHON")]
         pyslope: Option<PathBuf>,
-        /// Skip phase 2 and `cdem srm` against size (the slip-surface slab at 4 resolutions, 157 to
-        /// 8,675 hexahedra, and the 3D wedge at 4 mesh sizes; about 6 minutes, gmsh on PATH).
+        /// Skip phase 2 and `cdem srm` against size (the slip-surface slab at 5 resolutions, 269 to
+        /// 15,974 elements, and the 3D wedge at 4 mesh sizes, 1,382 to 16,579 tetrahedra; about 15
+        /// minutes, gmsh on PATH).
         #[arg(long)]
         no_trial_scaling: bool,
     },
