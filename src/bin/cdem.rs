@@ -90,7 +90,9 @@ enum Command {
     /// and `cdem srm` on the slip-surface slope, ensembles of it, the damping table, cost
     /// against size (gmsh for refine 7, 10) and phase 2 and `cdem srm` against size (gmsh):
     /// DIR/perf.md (with the validation rows perf/*) and CSVs. Run from the repository root;
-    /// about 45 to 65 minutes with the defaults (the plastic strength reductions about 10 of them).
+    /// about 70 to 110 minutes with the defaults (the plastic strength reductions about 10 of them,
+    /// phase 2 and `cdem srm` against size 30 to 50: its finest slab alone took 43 minutes on
+    /// 2026-12-05, on a loaded machine).
     Perf {
         #[arg(long, default_value = "perf")]
         out: PathBuf,
@@ -120,8 +122,8 @@ enum Command {
         #[arg(long, value_name = "PYTHON")]
         pyslope: Option<PathBuf>,
         /// Skip phase 2 and `cdem srm` against size (the slip-surface slab at 5 resolutions, 269 to
-        /// 15,974 elements, and the 3D wedge at 4 mesh sizes, 1,382 to 16,579 tetrahedra; about 15
-        /// minutes, gmsh on PATH).
+        /// 15,974 elements, and the 3D wedge at 4 mesh sizes, 1,382 to 16,579 tetrahedra; 30 to 50
+        /// minutes, most of it the finest slab; gmsh on PATH).
         #[arg(long)]
         no_trial_scaling: bool,
     },
