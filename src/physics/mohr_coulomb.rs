@@ -254,8 +254,9 @@ impl MohrCoulomb {
         }
         // Below the cut-off the general search's sets [0] and [3] decline,
         // and it tries the two edges next: in closed form here, the edge
-        // the main-plane return pointed to first (at most one of the two
-        // is admissible).
+        // the main-plane return pointed to first. The old order's stress
+        // either way while the two never both answer (checked, not proven:
+        // `at_most_one_edge_answers_and_the_main_plane_points_to_it`).
         if values[0] <= self.tensile {
             for q in edges {
                 if let Some(r) = self.edge_return(lame, values, q, tol) {
@@ -718,6 +719,37 @@ mod tests {
             answered += usize::from(fast.is_some());
         }
         assert!(answered > 100, "the sweep reaches the main plane ({answered})");
+    }
+
+    #[test]
+    fn at_most_one_edge_answers_and_the_main_plane_points_to_it() {
+        // `return_map` tries the edge the failed main-plane return names
+        // first: that gives the old order's stress only if the two edges never
+        // both answer. Checked, not proven, over a sweep of trials beyond the
+        // main plane, for non-associated (psi 0 and 5 deg) and associated flow.
+        let l = lame();
+        let mut answered = 0;
+        for (psi, seed) in [(0.0, 21), (5.0, 22), (25.0, 23)] {
+            let mc = rock(8e4, 25.0, 2e4, psi);
+            let mut next = uniform(seed);
+            for _ in 0..4000 {
+                let mut v = [0; 3].map(|_| 1e6 * next());
+                v.sort_by(|a, b| b.total_cmp(a));
+                let tol = 1e-12 * 1e6;
+                let main = mc.excess(0, v);
+                let Err(first) = mc.main_plane_return(l, v, main, tol) else { continue };
+                if main <= tol || v[0] > mc.tensile {
+                    continue;
+                }
+                let edges = [1, 2].map(|q| mc.edge_return(l, v, q, tol).is_some());
+                assert!(!(edges[0] && edges[1]), "{v:?} psi {psi}: both edges answer");
+                if edges[0] || edges[1] {
+                    assert!(edges[first - 1], "{v:?} psi {psi}: the hint {first} is the other edge");
+                    answered += 1;
+                }
+            }
+        }
+        assert!(answered > 100, "the sweep reaches the edges ({answered})");
     }
 
     #[test]
