@@ -8,9 +8,9 @@
 
 use std::time::Instant;
 
+use cdem::harness::perf::timing::strains_pass;
 use cdem::model::ELEMENT_SLOT;
 use cdem::physics::mohr_coulomb::Yield;
-use cdem::physics::plastic::cell_volumetric_strain;
 use cdem::solver::forces;
 
 fn main() {
@@ -60,10 +60,7 @@ fn main() {
     // tetrahedron, whatever its return mapping costs.
     let t = Instant::now();
     for _ in 0..passes {
-        for e in 0..model.elements.len() {
-            let (topo, tets) = (model.plastic.topology(model.elements.kind[e]), model.plastic.tets(e));
-            check += cell_volumetric_strain(topo, tets, model.elements.corners(e), &state.u);
-        }
+        check += strains_pass(&model, &state.u);
     }
     let strains = t.elapsed().as_secs_f64() / passes as f64;
     println!("tetrahedra yielding {y} of {n}");
