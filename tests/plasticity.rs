@@ -126,6 +126,34 @@ fn the_paper_slope_with_plastic_blocks_and_breakable_interfaces_finds_its_factor
     record("plasticity_paper_slope", &[run.row]);
 }
 
+/// Cheng et al.'s problem 61 (T = 0) on prisms: with no tensile strength the
+/// cells at the slope face part, and on the coarse mesh (2.1 m) a layer one
+/// element deep slides on its own, far below the published factor; with a
+/// skin band of 0.525 m cells within 2.1 m of the face the prisms find the
+/// deeper slip surface of the LEM (references/plastic.md, "Cheng #61: a skin
+/// band at the face"). At 0.955 times RS2's 1.35 (F = 1.2891, a trial of
+/// both searches) the coarse prisms do not come to rest and the banded ones
+/// do: the band lifts the factor past the one-element layer's.
+#[test]
+fn a_skin_band_at_the_face_keeps_cheng_61s_prisms_standing_where_the_one_element_layer_fails() {
+    use cdem::drivers::phase::NoWatch;
+    use cdem::drivers::srm::{Reduction, TrialStart};
+    use cdem::drivers::EndState;
+    let factor = 1.2891;
+    assert!((factor / reg::C61_RS2_FS.value - 0.955).abs() < 1e-3);
+    let outcome = |scene: &str| {
+        let scene = cdem::scene::Scene::load(std::path::Path::new(scene)).expect("scene");
+        let (mut red, _) = Reduction::new(&scene, TrialStart::Warm).expect("phase 1");
+        let trial = red.trial(factor, &mut NoWatch).expect("trial").trial;
+        println!("{:?} after {} steps, {:.3e} m", trial.outcome, trial.steps, trial.max_displacement);
+        (trial.outcome, trial.max_displacement)
+    };
+    let (coarse, coarse_u) = outcome("verification/plastic/cheng-61/c61-prism.toml");
+    let (banded, banded_u) = outcome("verification/plastic/cheng-61/c61-prism-face.toml");
+    assert_ne!(coarse, EndState::Equilibrium, "the coarse prisms' layer at the face fails ({coarse_u:.3e} m)");
+    assert_eq!(banded, EndState::Equilibrium, "the banded prisms stand ({banded_u:.3e} m)");
+}
+
 /// Elastic, the plastic element's forces (deviatoric per tetrahedron plus
 /// the cell-averaged pressure) are its mixed stiffness times the
 /// displacement: the kernel and the phase-1 `K_e` of a plastic block agree.

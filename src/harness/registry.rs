@@ -1637,6 +1637,14 @@ pub const GL1_CHART_FS: Reference = Reference {
 };
 /// Griffiths & Lane's own FE strength reduction of the same slope (as quoted).
 pub const GL1_FE_FS: f64 = 1.4;
+/// RS2's strength reduction of Cheng, Lansivaara & Wei's (2007) benched slope,
+/// RS2 verification problem 61 case 1 (as quoted by the xslope set;
+/// references/plastic.md, "Cheng, Lansivaara & Wei (2007): RS2 problem 61").
+pub const C61_RS2_FS: Reference = Reference {
+    value: 1.35,
+    source: PLASTIC_MD,
+    what: "FS of Cheng et al. (2007) problem 61 case 1 by RS2's shear strength reduction (as quoted)",
+};
 /// `cdem srm` with plastic blocks against the chart: 5 %, the bound
 /// (measured -0.6 %, on the conservative side).
 pub const TOL_PLASTIC_SLOPE: f64 = 0.05;

@@ -15,7 +15,8 @@
 //              by one layer),
 //   shape = 1: unstructured prisms (triangles extruded by one layer),
 //   shape = 2: tetrahedra (a 3D Delaunay mesh of the slab);
-// both of size h within H/2 of the face, growing linearly to 2 h at 1.5 H from it.
+// both of size h within H/2 of the face, growing linearly to 2 h at 1.5 H from it
+// (with h_face set: h_face within face_band of the face, growing to h at 2 face_band).
 // y runs from 0 to t: the slab is one element thick.
 //
 // Physical groups: the volume "soil"; surfaces "bottom" (z = zb), "left"
@@ -34,7 +35,21 @@ If (shape == 1 || shape == 2)
   Field[2].SizeMax = 2 * h;
   Field[2].DistMin = 0.5 * H;
   Field[2].DistMax = 1.5 * H;
-  Background Field = 2;
+  If (Exists(h_face))
+    // Optional skin band (set h_face, and face_band, before including): size h_face
+    // within face_band of the slope face, growing linearly to h at 2 face_band.
+    Field[3] = Threshold;
+    Field[3].InField = 1;
+    Field[3].SizeMin = h_face;
+    Field[3].SizeMax = h;
+    Field[3].DistMin = face_band;
+    Field[3].DistMax = 2 * face_band;
+    Field[4] = Min;
+    Field[4].FieldsList = {2, 3};
+    Background Field = 4;
+  Else
+    Background Field = 2;
+  EndIf
   Mesh.MeshSizeExtendFromBoundary = 0;
   Mesh.MeshSizeFromPoints = 0;
   Mesh.MeshSizeFromCurvature = 0;
