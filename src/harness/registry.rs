@@ -1645,6 +1645,98 @@ pub const C61_RS2_FS: Reference = Reference {
     source: PLASTIC_MD,
     what: "FS of Cheng et al. (2007) problem 61 case 1 by RS2's shear strength reduction (as quoted)",
 };
+/// A published homogeneous slope of issue 24 item 4 (references/plastic.md,
+/// "Summary"): its scenes on the three element shapes, its published
+/// strength-reduction and LEM factors (as quoted there) and our LEM input.
+#[derive(Debug, Clone, Copy)]
+pub struct PublishedSlope {
+    pub name: &'static str,
+    /// Hexahedra, prisms, tetrahedra (the meshes the mesh-independence
+    /// check uses: refined where references/plastic.md shows the coarse
+    /// mesh of that shape has not converged).
+    pub scenes: [&'static str; 3],
+    /// The published FE strength-reduction factor (G&L's own, else RS2's).
+    pub fe_srm: f64,
+    /// The published LEM factor (the first of the summary's column).
+    pub lem: f64,
+    /// Our LEM input of the same section.
+    pub lem_input: &'static str,
+}
+
+/// The six published slopes with plastic blocks on three element shapes
+/// (issue 24 item 4; `tests/plastic_slopes.rs`, about 80 minutes on 2
+/// cores). Cheng #63's hexahedra and Cheng #61's three shapes are the
+/// refined meshes (references/plastic.md, "2026-12-04" and "Cheng #61: a
+/// skin band at the face").
+pub const PUBLISHED_SLOPES: [PublishedSlope; 6] = [
+    PublishedSlope {
+        name: "Griffiths & Lane 1999 ex. 1",
+        scenes: [
+            "verification/plastic/griffiths-lane-1/gl1-hex.toml",
+            "verification/plastic/griffiths-lane-1/gl1-prism.toml",
+            "verification/plastic/griffiths-lane-1/gl1-tet.toml",
+        ],
+        fe_srm: GL1_FE_FS,
+        lem: GL1_CHART_FS.value,
+        lem_input: "verification/plastic/griffiths-lane-1/gl1-lem.toml",
+    },
+    PublishedSlope {
+        name: "Arai & Tagyo 1985 ex. 1",
+        scenes: [
+            "verification/plastic/arai-tagyo/at-hex.toml",
+            "verification/plastic/arai-tagyo/at-prism.toml",
+            "verification/plastic/arai-tagyo/at-tet.toml",
+        ],
+        fe_srm: 1.40,
+        lem: 1.409,
+        lem_input: "verification/plastic/arai-tagyo/at-lem.toml",
+    },
+    PublishedSlope {
+        name: "Yamagami & Ueta 1988",
+        scenes: [
+            "verification/plastic/yamagami-ueta/yu-hex.toml",
+            "verification/plastic/yamagami-ueta/yu-prism.toml",
+            "verification/plastic/yamagami-ueta/yu-tet.toml",
+        ],
+        fe_srm: 1.33,
+        lem: 1.348,
+        lem_input: "verification/plastic/yamagami-ueta/yu-lem.toml",
+    },
+    PublishedSlope {
+        name: "Cheng et al. 2007, RS2 #63",
+        scenes: [
+            "verification/plastic/cheng-63/c63-hex-fine.toml",
+            "verification/plastic/cheng-63/c63-prism.toml",
+            "verification/plastic/cheng-63/c63-tet.toml",
+        ],
+        fe_srm: 1.38,
+        lem: 1.383,
+        lem_input: "verification/plastic/cheng-63/c63-lem.toml",
+    },
+    PublishedSlope {
+        name: "Cheng et al. 2007, RS2 #61 case 1",
+        scenes: [
+            "verification/plastic/cheng-61/c61-hex-fine.toml",
+            "verification/plastic/cheng-61/c61-prism-face.toml",
+            "verification/plastic/cheng-61/c61-tet-face.toml",
+        ],
+        fe_srm: C61_RS2_FS.value,
+        lem: 1.327,
+        lem_input: "verification/plastic/cheng-61/c61-lem.toml",
+    },
+    PublishedSlope {
+        name: "ACADS 1(a)",
+        scenes: [
+            "verification/plastic/acads-1a/acads-hex.toml",
+            "verification/plastic/acads-1a/acads-prism.toml",
+            "verification/plastic/acads-1a/acads-tet.toml",
+        ],
+        fe_srm: 0.99,
+        lem: 1.00,
+        lem_input: "verification/lem/acads-1a.toml",
+    },
+];
+
 /// `cdem srm` with plastic blocks against the chart: 5 %, the issue's bound
 /// (measured -0.6 %, on the conservative side).
 pub const TOL_PLASTIC_SLOPE: f64 = 0.05;

@@ -1,0 +1,118 @@
+//! Issue 24 item 4 on all six published homogeneous slopes: `cdem srm` with
+//! plastic blocks on hexahedra, prisms and tetrahedra of the same slope,
+//! each shape within 5 % of the published FE strength reduction, of the
+//! published LEM and of our Bishop, and the three shapes within 3 % of each
+//! other (references/plastic.md). Heavy (about 80 minutes on 2 cores), so
+//! ignored by `cargo test --release`; run it with
+//!
+//! `cargo test --release --test plastic_slopes -- --ignored --test-threads 2 --nocapture`
+//!
+//! Griffiths & Lane's slope is also `cargo test`'s own row
+//! `plastic/gl1-mesh-spread` (tests/plasticity.rs).
+
+use std::path::Path;
+
+use cdem::harness::registry::{PublishedSlope, GOAL_MESH_SPREAD, PUBLISHED_SLOPES, TOL_PLASTIC_SLOPE};
+use cdem::harness::suite::srm::BRACKET_WIDTH;
+
+fn check(slope: &PublishedSlope) {
+    let lem = cdem::lem::analyse(&cdem::drivers::lem::load_lem_input(Path::new(slope.lem_input)).expect("LEM input"))
+        .expect("LEM");
+    let bishop = *lem.fs.bishop.as_ref().expect("Bishop's factor");
+    let mut fs = Vec::new();
+    let mut failures = Vec::new();
+    for scene in slope.scenes {
+        let t0 = std::time::Instant::now();
+        let loaded = cdem::scene::Scene::load(Path::new(scene)).expect("scene");
+        let (result, _) = cdem::drivers::run_srm(&loaded, &mut |_| {}).expect("srm");
+        let f = result.fs.unwrap_or(f64::NAN);
+        let upper = result.hi_outcome.map_or("-".to_string(), |o| format!("{o:?}"));
+        println!(
+            "{}: {scene}: FS {f:.4} {:?} (upper end {upper}), {} trials, {:.0} s; vs FE-SRM {:+.1} %, vs LEM {:+.1} %, \
+             vs our Bishop {bishop:.4} {:+.1} %",
+            slope.name,
+            result.bracket,
+            result.trials.len(),
+            t0.elapsed().as_secs_f64(),
+            100.0 * (f / slope.fe_srm - 1.0),
+            100.0 * (f / slope.lem - 1.0),
+            100.0 * (f / bishop - 1.0),
+        );
+        match result.bracket {
+            [Some(lo), Some(hi)] if hi - lo <= BRACKET_WIDTH + 1e-12 => {}
+            b => failures.push(format!("{scene}: no bracket of width {BRACKET_WIDTH}: {b:?}")),
+        }
+        for (what, reference) in
+            [("published FE-SRM", slope.fe_srm), ("published LEM", slope.lem), ("our Bishop", bishop)]
+        {
+            let within = (f / reference - 1.0).abs() <= TOL_PLASTIC_SLOPE; // false for NaN
+            if !within {
+                failures.push(format!("{scene}: FS {f:.4} not within 5 % of the {what} {reference:.4}"));
+            }
+        }
+        fs.push(f);
+    }
+    let lo = fs.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = fs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let spread = (hi - lo) / lo;
+    println!("{}: spread {:.1} % (hexahedra, prisms, tetrahedra: {fs:.4?})", slope.name, 100.0 * spread);
+    let within = spread <= GOAL_MESH_SPREAD; // false for NaN
+    if !within {
+        failures.push(format!("spread {:.1} % above {:.0} %", 100.0 * spread, 100.0 * GOAL_MESH_SPREAD));
+    }
+    assert!(failures.is_empty(), "{}: {failures:#?}", slope.name);
+}
+
+fn slope(name: &str) -> &'static PublishedSlope {
+    PUBLISHED_SLOPES.iter().find(|s| s.name.starts_with(name)).expect("a published slope of that name")
+}
+
+#[test]
+#[ignore = "heavy: about 5 minutes on 2 cores"]
+fn griffiths_and_lane() {
+    check(slope("Griffiths & Lane"));
+}
+
+#[test]
+#[ignore = "heavy: about 10 minutes on 2 cores"]
+fn arai_and_tagyo() {
+    check(slope("Arai & Tagyo"));
+}
+
+#[test]
+#[ignore = "heavy: about 15 minutes on 2 cores"]
+fn yamagami_and_ueta() {
+    check(slope("Yamagami & Ueta"));
+}
+
+#[test]
+#[ignore = "heavy: about 25 minutes on 2 cores"]
+fn cheng_63() {
+    check(slope("Cheng et al. 2007, RS2 #63"));
+}
+
+#[test]
+#[ignore = "heavy: about 20 minutes on 2 cores"]
+fn cheng_61() {
+    check(slope("Cheng et al. 2007, RS2 #61"));
+}
+
+#[test]
+#[ignore = "heavy: about 10 minutes on 2 cores"]
+fn acads_1a() {
+    check(slope("ACADS 1(a)"));
+}
+
+/// The table the heavy tests read: six slopes, three shapes each, every
+/// scene and LEM input present (this one is not ignored).
+#[test]
+fn the_published_slopes_table_names_committed_inputs() {
+    assert_eq!(PUBLISHED_SLOPES.len(), 6);
+    for s in &PUBLISHED_SLOPES {
+        for f in s.scenes.iter().chain([&s.lem_input]) {
+            assert!(Path::new(f).is_file(), "{}: {f} is not a file", s.name);
+        }
+        assert!(s.scenes[0].contains("hex") && s.scenes[1].contains("prism") && s.scenes[2].contains("tet"));
+        assert!(s.fe_srm > 0.5 && s.lem > 0.5, "{}", s.name);
+    }
+}
