@@ -2,7 +2,7 @@
 //! plastic blocks on hexahedra, prisms and tetrahedra of the same slope,
 //! each shape within 5 % of the published FE strength reduction, of the
 //! published LEM and of our Bishop, and the three shapes within 3 % of each
-//! other (references/plastic.md). Heavy (about 80 minutes on 2 cores), so
+//! other (references/plastic.md). Heavy (about an hour on 2 cores), so
 //! ignored by `cargo test --release`; run it with
 //!
 //! `cargo test --release --test plastic_slopes -- --ignored --test-threads 2 --nocapture`
@@ -68,37 +68,37 @@ fn slope(name: &str) -> &'static PublishedSlope {
 }
 
 #[test]
-#[ignore = "heavy: about 5 minutes on 2 cores"]
+#[ignore = "heavy: about 8 minutes, another heavy test beside it on 2 cores"]
 fn griffiths_and_lane() {
     check(slope("Griffiths & Lane"));
 }
 
 #[test]
-#[ignore = "heavy: about 10 minutes on 2 cores"]
+#[ignore = "heavy: about 11 minutes, another heavy test beside it on 2 cores"]
 fn arai_and_tagyo() {
     check(slope("Arai & Tagyo"));
 }
 
 #[test]
-#[ignore = "heavy: about 15 minutes on 2 cores"]
+#[ignore = "heavy: about 16 minutes, another heavy test beside it on 2 cores"]
 fn yamagami_and_ueta() {
     check(slope("Yamagami & Ueta"));
 }
 
 #[test]
-#[ignore = "heavy: about 25 minutes on 2 cores"]
+#[ignore = "heavy: about 32 minutes, another heavy test beside it on 2 cores"]
 fn cheng_63() {
     check(slope("Cheng et al. 2007, RS2 #63"));
 }
 
 #[test]
-#[ignore = "heavy: about 20 minutes on 2 cores"]
+#[ignore = "heavy: about 35 minutes, another heavy test beside it on 2 cores"]
 fn cheng_61() {
     check(slope("Cheng et al. 2007, RS2 #61"));
 }
 
 #[test]
-#[ignore = "heavy: about 10 minutes on 2 cores"]
+#[ignore = "heavy: about 14 minutes, another heavy test beside it on 2 cores"]
 fn acads_1a() {
     check(slope("ACADS 1(a)"));
 }

@@ -1664,7 +1664,7 @@ pub struct PublishedSlope {
 }
 
 /// The six published slopes with plastic blocks on three element shapes
-/// (issue 24 item 4; `tests/plastic_slopes.rs`, about 80 minutes on 2
+/// (issue 24 item 4; `tests/plastic_slopes.rs`, about an hour on 2
 /// cores). Cheng #63's hexahedra and Cheng #61's three shapes are the
 /// refined meshes (references/plastic.md, "2026-12-04" and "Cheng #61: a
 /// skin band at the face").
