@@ -92,7 +92,7 @@ fn cheng_63() {
 }
 
 #[test]
-#[ignore = "heavy: about 35 minutes, another heavy test beside it on 2 cores"]
+#[ignore = "heavy: about 40 minutes, another heavy test beside it on 2 cores"]
 fn cheng_61() {
     check(slope("Cheng et al. 2007, RS2 #61"));
 }
