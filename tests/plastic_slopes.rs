@@ -13,7 +13,7 @@
 use std::path::Path;
 
 use cdem::harness::registry::{PublishedSlope, GOAL_MESH_SPREAD, PUBLISHED_SLOPES, TOL_PLASTIC_SLOPE};
-use cdem::harness::suite::srm::BRACKET_WIDTH;
+use cdem::harness::suite::plastic::{bracket_defect, mesh_spread};
 
 fn check(slope: &PublishedSlope) {
     let lem = cdem::lem::analyse(&cdem::drivers::lem::load_lem_input(Path::new(slope.lem_input)).expect("LEM input"))
@@ -38,23 +38,21 @@ fn check(slope: &PublishedSlope) {
             100.0 * (f / slope.lem - 1.0),
             100.0 * (f / bishop - 1.0),
         );
-        match result.bracket {
-            [Some(lo), Some(hi)] if hi - lo <= BRACKET_WIDTH + 1e-12 => {}
-            b => failures.push(format!("{scene}: no bracket of width {BRACKET_WIDTH}: {b:?}")),
+        if let Some(why) = bracket_defect(&result) {
+            failures.push(format!("{scene}: {why}"));
         }
         for (what, reference) in
             [("published FE-SRM", slope.fe_srm), ("published LEM", slope.lem), ("our Bishop", bishop)]
         {
             let within = (f / reference - 1.0).abs() <= TOL_PLASTIC_SLOPE; // false for NaN
             if !within {
-                failures.push(format!("{scene}: FS {f:.4} not within 5 % of the {what} {reference:.4}"));
+                let tol = 100.0 * TOL_PLASTIC_SLOPE;
+                failures.push(format!("{scene}: FS {f:.4} not within {tol:.0} % of the {what} {reference:.4}"));
             }
         }
         fs.push(f);
     }
-    let lo = fs.iter().copied().fold(f64::INFINITY, f64::min);
-    let hi = fs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let spread = (hi - lo) / lo;
+    let spread = mesh_spread(&fs);
     println!("{}: spread {:.1} % (hexahedra, prisms, tetrahedra: {fs:.4?})", slope.name, 100.0 * spread);
     let within = spread <= GOAL_MESH_SPREAD; // false for NaN
     if !within {

@@ -1671,11 +1671,7 @@ pub struct PublishedSlope {
 pub const PUBLISHED_SLOPES: [PublishedSlope; 6] = [
     PublishedSlope {
         name: "Griffiths & Lane 1999 ex. 1",
-        scenes: [
-            "verification/plastic/griffiths-lane-1/gl1-hex.toml",
-            "verification/plastic/griffiths-lane-1/gl1-prism.toml",
-            "verification/plastic/griffiths-lane-1/gl1-tet.toml",
-        ],
+        scenes: [PLASTIC_GL1_HEX.input, PLASTIC_GL1_PRISM.input, PLASTIC_GL1_TET.input],
         fe_srm: GL1_FE_FS,
         lem: GL1_CHART_FS.value,
         lem_input: "verification/plastic/griffiths-lane-1/gl1-lem.toml",

@@ -274,11 +274,29 @@ fn slope_row(case: &crate::harness::registry::Case, id: &str, reference: f64) ->
     let (result, _) = crate::drivers::run_srm(&case.scene()?, &mut |_| {})?;
     let mut row =
         crate::harness::registry::row(id).value(result.fs.unwrap_or(f64::NAN), reference, t0.elapsed().as_secs_f64());
-    match result.bracket {
-        [Some(lo), Some(hi)] if hi - lo <= crate::harness::suite::srm::BRACKET_WIDTH + 1e-12 => {}
-        b => row = row.with_defect(format!("no bracket of width {}: {b:?}", crate::harness::suite::srm::BRACKET_WIDTH)),
+    if let Some(why) = bracket_defect(&result) {
+        row = row.with_defect(why);
     }
     Ok(SlopeRun { result, row })
+}
+
+/// Why a strength reduction's result is not a factor of safety: no bracket
+/// at most [`crate::harness::suite::srm::BRACKET_WIDTH`] wide (None: it is).
+pub fn bracket_defect(result: &crate::drivers::SrmResult) -> Option<String> {
+    let width = crate::harness::suite::srm::BRACKET_WIDTH;
+    match result.bracket {
+        [Some(lo), Some(hi)] if hi - lo <= width + 1e-12 => None,
+        b => Some(format!("no bracket of width {width}: {b:?}")),
+    }
+}
+
+/// The mesh-independence measure of issue 24 item 4: `(max - min) / min` of
+/// one slope's factors of safety on several meshes (a NaN factor, a
+/// reduction without a bracket, is left out: [`bracket_defect`] reports it).
+pub fn mesh_spread(fs: &[f64]) -> f64 {
+    let lo = fs.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = fs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    (hi - lo) / lo
 }
 
 /// The rows `plastic/gl1-prism-srm`, `plastic/gl1-tet-srm` and
@@ -293,10 +311,7 @@ pub fn gl1_shape_rows(
     use crate::harness::registry as reg;
     let prism = slope_row(&reg::PLASTIC_GL1_PRISM, "plastic/gl1-prism-srm", reg::GL1_CHART_FS.value)?;
     let tet = slope_row(&reg::PLASTIC_GL1_TET, "plastic/gl1-tet-srm", reg::GL1_CHART_FS.value)?;
-    let fs = [hex.row.ours, prism.row.ours, tet.row.ours];
-    let (lo, hi) =
-        (fs.iter().copied().fold(f64::INFINITY, f64::min), fs.iter().copied().fold(f64::NEG_INFINITY, f64::max));
-    let spread = (hi - lo) / lo;
+    let spread = mesh_spread(&[hex.row.ours, prism.row.ours, tet.row.ours]);
     let seconds = prism.row.seconds + tet.row.seconds;
     let mut spread_row = reg::row("plastic/gl1-mesh-spread").value(spread, 0.0, seconds).with_note(format!(
         "hexahedra {:.4} {:?}, prisms {:.4} {:?}, tetrahedra {:.4} {:?} (references/plastic.md)",
