@@ -60,3 +60,38 @@ fn a_broken_geo_is_a_gmsh_error() {
         other => panic!("expected Error::Gmsh, got {other:?}"),
     }
 }
+
+/// `verification/plastic/slab.geo` checks the including file's sizes: a
+/// skin band with a size that is not positive, or without its depth, is
+/// refused with a message naming the variable (gmsh's own error, "Wrong mesh
+/// element size", would name none), and no mesh is written.
+#[test]
+fn the_slab_refuses_a_skin_band_it_cannot_mesh_and_names_the_variable() {
+    if skip_without_gmsh("the slab's size checks") {
+        return;
+    }
+    // The slab and one section, copied as the cases lay them out.
+    let plastic = Path::new(env!("CARGO_MANIFEST_DIR")).join("verification/plastic");
+    let dir = std::env::temp_dir().join(format!("cdem-slab-check-{}", std::process::id()));
+    let case = dir.join("case");
+    std::fs::create_dir_all(&case).expect("temporary directory");
+    std::fs::copy(plastic.join("slab.geo"), dir.join("slab.geo")).expect("copy slab.geo");
+    std::fs::copy(plastic.join("cheng-61/section.geo"), case.join("section.geo")).expect("copy section.geo");
+    for (sizes, named) in [
+        ("h_face = -1; face_band = 2.1;", "h_face = -1"),
+        ("h_face = 0.5;", "face_band is not"),
+        ("h_face = 0.5; face_band = 0;", "face_band = 0"),
+    ] {
+        let (geo, msh) = (case.join("check.geo"), case.join("check.msh"));
+        std::fs::write(&geo, format!("shape = 1;\n{sizes}\nInclude \"section.geo\";\nInclude \"../slab.geo\";\n"))
+            .expect("write the .geo");
+        let result = regenerate(&geo, &msh);
+        let written = msh.exists();
+        match result {
+            Err(Error::Gmsh(message)) => assert!(message.contains(named), "{sizes}: {message}"),
+            other => panic!("{sizes}: expected Error::Gmsh, got {other:?}"),
+        }
+        assert!(!written, "{sizes}: a mesh was written");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

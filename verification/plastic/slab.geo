@@ -23,6 +23,23 @@
 // (x = x0, if has_left), "right" (x = x1), "front" (y = 0), "back" (y = t) and
 // "ground" (the slope's top surface, one box per ground segment).
 Mesh.MshFileVersion = 4.1;
+General.AbortOnError = 4; // an Error() below ends gmsh with exit status 1, no .msh written
+
+// The including file's sizes, checked before they reach gmsh's own (less specific) errors.
+If (shape != 0 && h <= 0)
+  Error("slab.geo: h = %g: the element size near the face must be positive", h);
+EndIf
+If (Exists(h_face))
+  If (h_face <= 0)
+    Error("slab.geo: h_face = %g: the skin band's element size must be positive", h_face);
+  EndIf
+  If (!Exists(face_band))
+    Error("slab.geo: h_face is set but face_band is not: set the skin band's depth (m)");
+  EndIf
+  If (face_band <= 0)
+    Error("slab.geo: face_band = %g: the skin band's depth must be positive", face_band);
+  EndIf
+EndIf
 
 If (shape == 1 || shape == 2)
   // Size h within H/2 of the slope face (the curves fc[]), growing to 2 h beyond 1.5 H.
