@@ -322,3 +322,91 @@ pub fn gl1_shape_rows(
     }
     Ok((prism, tet, spread_row))
 }
+
+/// A published slope of issue 24 item 4 on its three shapes
+/// ([`crate::harness::registry::PUBLISHED_SLOPES`]): each shape's `cdem srm`
+/// and our Bishop on the same section.
+pub struct PublishedSlopeRun {
+    /// Hexahedra, prisms, tetrahedra, as the slope lists its scenes.
+    pub results: Vec<crate::drivers::SrmResult>,
+    /// The wall time of each (s).
+    pub seconds: Vec<f64>,
+    /// Our Bishop factor of the slope's LEM input.
+    pub bishop: f64,
+}
+
+impl PublishedSlopeRun {
+    /// Runs the three strength reductions and the LEM of `slope`.
+    pub fn run(
+        slope: &crate::harness::registry::PublishedSlope,
+        progress: &mut dyn FnMut(&str),
+    ) -> Result<Self, crate::error::Error> {
+        let input = crate::drivers::lem::load_lem_input(std::path::Path::new(slope.lem_input))?;
+        let bishop = crate::lem::analyse(&input)?.fs.bishop.as_ref().map_or(f64::NAN, |b| *b);
+        let (mut results, mut seconds) = (Vec::new(), Vec::new());
+        for scene in slope.scenes {
+            progress(&format!("{}: cdem srm {scene}", slope.name));
+            let t0 = std::time::Instant::now();
+            let loaded = crate::scene::Scene::load(std::path::Path::new(scene))?;
+            results.push(crate::drivers::run_srm(&loaded, &mut |_| {})?.0);
+            seconds.push(t0.elapsed().as_secs_f64());
+        }
+        Ok(Self { results, seconds, bishop })
+    }
+
+    /// The factors of safety (NaN without a bracket).
+    pub fn factors(&self) -> Vec<f64> {
+        self.results.iter().map(|r| r.fs.unwrap_or(f64::NAN)).collect()
+    }
+
+    /// Its four rows ([`crate::harness::registry::published_slope_ids`]):
+    /// each shape against the published FE strength reduction (the note has
+    /// the published LEM and our Bishop too), and the spread of the three.
+    /// A shape without a bracket gives its row and the spread a defect.
+    pub fn rows(&self, slope: &crate::harness::registry::PublishedSlope) -> Vec<crate::harness::report::Check> {
+        use crate::harness::registry as reg;
+        let ids = reg::published_slope_ids(slope);
+        let fs = self.factors();
+        let mut rows = Vec::new();
+        for (k, result) in self.results.iter().enumerate() {
+            let f = fs[k];
+            let mut row = reg::row(&ids[k]).value(f, slope.fe_srm, self.seconds[k]).with_note(format!(
+                "{}: bracket {:?}, upper end {:?}, {} trials; against the published LEM {:.3} {:+.1} %, \
+                 our Bishop {:.4} {:+.1} %",
+                slope.scenes[k],
+                result.bracket,
+                result.hi_outcome,
+                result.trials.len(),
+                slope.lem,
+                100.0 * (f / slope.lem - 1.0),
+                self.bishop,
+                100.0 * (f / self.bishop - 1.0)
+            ));
+            if let Some(why) = bracket_defect(result) {
+                row = row.with_defect(why);
+            }
+            rows.push(row);
+        }
+        let mut spread = reg::row(&ids[3])
+            .value(mesh_spread(&fs), reg::GOAL_MESH_SPREAD, self.seconds.iter().sum())
+            .with_note(format!("hexahedra, prisms, tetrahedra: {fs:.4?} (references/plastic.md)"));
+        if let Some(why) = rows.iter().find_map(|r| r.defect.clone()) {
+            spread = spread.with_defect(why);
+        }
+        rows.push(spread);
+        rows
+    }
+}
+
+/// The rows of the five heavy published slopes (every one but Griffiths &
+/// Lane's), skipped with `reason`.
+pub fn published_slopes_skipped(reason: &str) -> Vec<crate::harness::report::Check> {
+    use crate::harness::registry as reg;
+    heavy_published_slopes().flat_map(reg::published_slope_ids).map(|id| reg::row(&id).skipped(reason)).collect()
+}
+
+/// The published slopes whose rows only `cdem reproduce --published-slopes`
+/// computes: all but Griffiths & Lane's (`cargo test`'s own rows).
+pub fn heavy_published_slopes() -> impl Iterator<Item = &'static crate::harness::registry::PublishedSlope> {
+    crate::harness::registry::PUBLISHED_SLOPES.iter().filter(|s| s.key != "gl1")
+}
