@@ -370,12 +370,15 @@ impl PublishedSlopeRun {
         let mut rows = Vec::new();
         for (k, result) in self.results.iter().enumerate() {
             let f = fs[k];
+            let bracket = match result.bracket {
+                [Some(lo), Some(hi)] => format!("[{lo:.4}, {hi:.4}]"),
+                b => format!("{b:?}"),
+            };
+            let upper = result.hi_outcome.map_or("-".to_string(), |o| format!("{o:?}"));
             let mut row = reg::row(&ids[k]).value(f, slope.fe_srm, self.seconds[k]).with_note(format!(
-                "{}: bracket {:?}, upper end {:?}, {} trials; against the published LEM {:.3} {:+.1} %, \
+                "{}: bracket {bracket}, upper end {upper}, {} trials; against the published LEM {:.3} {:+.1} %, \
                  our Bishop {:.4} {:+.1} %",
                 slope.scenes[k],
-                result.bracket,
-                result.hi_outcome,
                 result.trials.len(),
                 slope.lem,
                 100.0 * (f / slope.lem - 1.0),
