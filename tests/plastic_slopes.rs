@@ -12,7 +12,7 @@
 
 use std::path::Path;
 
-use cdem::harness::registry::{PublishedSlope, GOAL_MESH_SPREAD, PUBLISHED_SLOPES, TOL_PLASTIC_SLOPE};
+use cdem::harness::registry::{PublishedSlope, GOAL_MESH_SPREAD, PUBLISHED_SLOPES, SLOPES_SKIP, TOL_PLASTIC_SLOPE};
 use cdem::harness::report::record;
 use cdem::harness::suite::plastic::{bracket_defect, mesh_spread, published_slopes_skipped, PublishedSlopeRun};
 
@@ -110,10 +110,7 @@ fn acads_1a() {
 /// reproduce --published-slopes` computes them.
 #[test]
 fn the_published_slopes_table_names_committed_inputs() {
-    let skipped = published_slopes_skipped(
-        "heavy (about an hour on 2 cores): cargo run --release -- reproduce --published-slopes, \
-         or the ignored tests of tests/plastic_slopes.rs",
-    );
+    let skipped = published_slopes_skipped(SLOPES_SKIP);
     assert_eq!(skipped.len(), 20);
     record("plastic_slopes", &skipped);
     assert_eq!(PUBLISHED_SLOPES.len(), 6);

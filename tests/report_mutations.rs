@@ -366,6 +366,16 @@ fn every_case_input_is_declared() {
     for (_, msh) in reg::SLOPE_MESHES.iter().filter(|(r, _)| *r == 1.0) {
         assert!(declared.iter().any(|f| f == msh), "{msh}");
     }
+    // The heavy published slopes' rows read their own scenes and LEM input
+    // (inputs::DECLARED writes the paths out again: it may not import the registry).
+    for slope in cdem::harness::suite::plastic::heavy_published_slopes() {
+        for id in reg::published_slope_ids(slope) {
+            let files = inputs::declared(&id, reg::PLASTIC_MD, root()).unwrap_or_default();
+            for f in slope.scenes.iter().chain([&slope.lem_input]) {
+                assert!(files.iter().any(|d| d == f), "{id}: {f} is not among its declared inputs {files:?}");
+            }
+        }
+    }
 }
 
 /// The report's header: commit, date, command (with the invocation), threads.

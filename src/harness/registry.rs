@@ -1697,7 +1697,7 @@ pub const C63_FE_FS: f64 = 1.38;
 pub const ACADS_FE_FS: f64 = 0.99;
 
 /// Why the rows of the five heavy published slopes may be skipped.
-const SLOPES_SKIP: &str = "heavy (about an hour on 2 cores): cargo run --release -- reproduce --published-slopes, \
+pub const SLOPES_SKIP: &str = "heavy (about an hour on 2 cores): cargo run --release -- reproduce --published-slopes, \
                            or the ignored tests of tests/plastic_slopes.rs";
 
 /// The ids of a published slope's rows: its hexahedra, prisms and

@@ -404,8 +404,16 @@ impl PublishedSlopeRun {
 /// The rows of the five heavy published slopes (every one but Griffiths &
 /// Lane's), skipped with `reason`.
 pub fn published_slopes_skipped(reason: &str) -> Vec<crate::harness::report::Check> {
+    heavy_published_slopes().flat_map(|s| published_slope_skipped(s, reason)).collect()
+}
+
+/// The four rows of `slope`, skipped with `reason`.
+pub fn published_slope_skipped(
+    slope: &crate::harness::registry::PublishedSlope,
+    reason: &str,
+) -> [crate::harness::report::Check; 4] {
     use crate::harness::registry as reg;
-    heavy_published_slopes().flat_map(reg::published_slope_ids).map(|id| reg::row(&id).skipped(reason)).collect()
+    reg::published_slope_ids(slope).map(|id| reg::row(&id).skipped(reason))
 }
 
 /// The published slopes whose rows only `cdem reproduce --published-slopes`
