@@ -85,6 +85,49 @@ fn joint_strengths_are_checked_and_named() {
 }
 
 #[test]
+fn rock_mass_strengths_are_checked_and_named() {
+    let plastic = GOOD.replace(
+        "density = 2100.0",
+        "density = 2100.0\nstrength = { cohesion = 50e3, friction_angle = 35.0, tensile = 0.0, dilation_angle = 10.0 }",
+    );
+    parse(&plastic).unwrap();
+    let bad = |from: &str, to: &str| invalid_key(&plastic.replace(from, to));
+    assert_eq!(bad("cohesion = 50e3", "cohesion = -1.0"), "material[0].strength.cohesion");
+    assert_eq!(bad("cohesion = 50e3", "cohesion = inf"), "material[0].strength.cohesion");
+    assert_eq!(bad("tensile = 0.0", "tensile = -1.0"), "material[0].strength.tensile");
+    assert_eq!(bad("friction_angle = 35.0", "friction_angle = 90.0"), "material[0].strength.friction_angle");
+    assert_eq!(bad("friction_angle = 35.0", "friction_angle = nan"), "material[0].strength.friction_angle");
+    // Non-associated flow: the dilation angle at most the friction angle.
+    assert_eq!(bad("dilation_angle = 10.0", "dilation_angle = 40.0"), "material[0].strength.dilation_angle");
+    assert_eq!(bad("dilation_angle = 10.0", "dilation_angle = -1.0"), "material[0].strength.dilation_angle");
+    // A material that carries no shear at all.
+    assert_eq!(
+        bad(
+            "cohesion = 50e3, friction_angle = 35.0, tensile = 0.0, dilation_angle = 10.0",
+            "cohesion = 0.0, friction_angle = 0.0, tensile = 0.0, dilation_angle = 0.0"
+        )
+        .as_str(),
+        "material[0].strength"
+    );
+    let missing = parse(&plastic.replace("cohesion = 50e3, ", "")).unwrap_err();
+    assert!(missing.to_string().contains("cohesion"), "{missing}");
+}
+
+#[test]
+fn failure_phase_settings_are_checked_and_named() {
+    let with = |line: &str| invalid_key(&format!("{GOOD}\n[failure]\n{line}\n"));
+    parse(&format!("{GOOD}\n[failure]\nmax_steps = 100\nsmoothing = 0.6\nsliding_travel = 0.0\n")).unwrap();
+    assert_eq!(with("max_steps = 0"), "failure.max_steps");
+    assert_eq!(with("stage_every = 0"), "failure.stage_every");
+    assert_eq!(with("smoothing = 1.0"), "failure.smoothing");
+    assert_eq!(with("smoothing = -0.1"), "failure.smoothing");
+    assert_eq!(with("smoothing = nan"), "failure.smoothing");
+    assert_eq!(with("sliding_displacement = 0.0"), "failure.sliding_displacement");
+    assert_eq!(with("sliding_displacement = inf"), "failure.sliding_displacement");
+    assert_eq!(with("sliding_travel = -1.0"), "failure.sliding_travel");
+}
+
+#[test]
 fn a_group_the_mesh_lacks_is_named_with_its_key() {
     let scene = parse(&GOOD.replace("group = \"bottom\"", "group = \"floor\"")).unwrap();
     match cdem::drivers::build_model(&scene) {
