@@ -156,6 +156,10 @@ pub struct PlasticSummary {
     pub yielding_volume: f64,
     /// Volume of their tetrahedra that have yielded at some step.
     pub yielded_volume: f64,
+    /// Of `yielding_volume` and `yielded_volume`: the volume on a tension
+    /// plane (the rest yields in shear alone).
+    pub yielding_tension_volume: f64,
+    pub yielded_tension_volume: f64,
     /// Largest element plastic shear strain (FLAC's measure).
     pub max_plastic_shear: f64,
 }

@@ -293,3 +293,36 @@ fn srm_without_a_breakable_interface_is_invalid_input() {
     assert!(String::from_utf8_lossy(&o.stderr).contains("scene key `interface`"));
     assert!(!out.exists());
 }
+
+/// `cdem run` on plastic blocks (Griffiths & Lane's hexahedra with a tenth
+/// of their cohesion, 300 failure steps): `summary.json` has the plastic
+/// volumes (yielding and yielded, and their parts in tension) and the VTK
+/// frames the plastic cell fields of docs/method.md 2.9b.
+#[test]
+fn run_on_plastic_blocks_writes_their_yield_state() {
+    let dir = temp_dir("plastic");
+    std::fs::create_dir_all(&dir).unwrap();
+    let src = std::path::Path::new("verification/plastic/griffiths-lane-1");
+    let text = std::fs::read_to_string(src.join("gl1-hex.toml")).unwrap();
+    let mesh = std::fs::canonicalize(src.join("gl1-hex.msh")).unwrap();
+    let text = text.replace("file = \"gl1-hex.msh\"", &format!("file = {:?}", mesh.to_str().unwrap()));
+    assert!(text.contains("cohesion = 10.0e3"), "the scene's cohesion moved");
+    let text = format!("{}\n[failure]\nmax_steps = 300\n", text.replace("cohesion = 10.0e3", "cohesion = 1.0e3"));
+    let scene = dir.join("weak.toml");
+    std::fs::write(&scene, text).unwrap();
+    let out = dir.join("out");
+    let o = cdem_run(&scene, &out);
+    assert!(out.join("summary.json").exists(), "{}", String::from_utf8_lossy(&o.stderr));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let plastic = &summary["plastic"];
+    for key in ["volume", "yielding_volume", "yielded_volume", "yielding_tension_volume", "yielded_tension_volume"] {
+        assert!(plastic[key].is_f64(), "summary.json's plastic lacks {key}: {plastic}");
+    }
+    assert!(plastic["yielded_volume"].as_f64().unwrap() > 0.0, "{plastic}");
+    let vtu = std::fs::read_to_string(out.join("final.vtu")).unwrap();
+    for field in ["plastic_shear", "yielding", "yielded", "yielding_tension", "yielded_tension"] {
+        assert!(vtu.contains(&format!("Name=\"{field}\"")), "final.vtu lacks {field}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

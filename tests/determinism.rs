@@ -86,7 +86,9 @@ fn trial_fingerprint(scene: &str, factor: f64, steps: usize, threads: usize) -> 
         bits.extend([t.max_displacement, t.yielded_volume].map(f64::to_bits));
         for c in run.cells.iter().flatten() {
             bits.extend(c.stress.map(f64::to_bits));
-            bits.extend([c.yielding, c.yielded, c.plastic_shear].map(f64::to_bits));
+            bits.extend(
+                [c.yielding, c.yielded, c.yielding_tension, c.yielded_tension, c.plastic_shear].map(f64::to_bits),
+            );
         }
         bits
     })

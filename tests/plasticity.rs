@@ -417,3 +417,63 @@ fn the_smoothed_tetrahedra_forces_are_the_virtual_work_of_their_strain() {
     println!("largest force change from the smoothing {change:.3e} N of {size:.3e} N");
     assert!(change > 0.05 * size, "the smoothing changed the forces by only {change} of {size}");
 }
+
+/// The yield flags per tetrahedron (shear or tension, now and ever: FLAC's
+/// `shear-n`, `tension-n`, `shear-p`, `tension-p`) and the cell fractions
+/// the VTK files and the summary carry: a cell stretched along z past its
+/// cut-off yields in tension in every tetrahedron, a cell sheared in x-z
+/// (no stretch) in shear alone; both keep the flag once unloaded.
+#[test]
+fn a_cell_says_which_tetrahedra_yield_in_shear_and_which_in_tension() {
+    use cdem::mesh::shape::CellKind;
+    use cdem::physics::element::element_operators;
+    use cdem::physics::material::{Material, MaterialLaw, YoungPoisson};
+    use cdem::physics::mohr_coulomb::{MohrCoulomb, Yield};
+    use cdem::physics::plastic::{cell_plastic, plastic_operator, CellPlastic, TetPlastic, Volumetric, MAX_TETS};
+    use cdem::physics::tet_operator::TetTopology;
+    let strength = RockStrength { cohesion: 2e4, tan_phi: 30f64.to_radians().tan(), tensile: 1e4, tan_psi: 0.0 };
+    let material = Material {
+        lame: YoungPoisson { young: 1e9, poisson: 0.3 }.into(),
+        density: 2000.0,
+        law: MaterialLaw::MohrCoulomb(strength),
+    };
+    let corners = DISTORTED_HEX.to_vec();
+    let kind = CellKind::Hex8;
+    let ops = element_operators(kind, &corners, &material).unwrap();
+    let (topo, tets) = (TetTopology::of(kind), plastic_operator(kind, &corners));
+    let surface = MohrCoulomb::of(&strength);
+    let nodes: Vec<u32> = (0..8).collect();
+    let n = tets.len();
+    // One pass at `u`, then the cell as the outputs see it.
+    let look = |u: &[f64], hist: &mut [TetPlastic; MAX_TETS]| -> CellPlastic {
+        cell_pass(kind, &tets, &ops.grad, material.lame, &surface, u, hist);
+        cell_plastic(&topo, &tets, material.lame, &nodes, u, Volumetric::Cell, &hist[..n])
+    };
+    let field = |f: &dyn Fn(usize) -> f64| -> Vec<f64> { (0..24).map(f).collect() };
+    let (rest, z) = (vec![0.0; 24], |i: usize| corners[i / 3][2]);
+    // Stretched along z: sigma_zz about E eps = 1e6 Pa, a hundred times the cut-off.
+    let stretch = field(&|i| if i % 3 == 2 { 1e-3 * z(i) } else { 0.0 });
+    let mut hist = [TetPlastic::default(); MAX_TETS];
+    let c = look(&stretch, &mut hist);
+    assert!(hist[..n].iter().all(|h| h.now == Yield::Tension && h.ever && h.ever_tension), "{:?}", &hist[..n]);
+    assert!((c.yielding - 1.0).abs() < 1e-12 && (c.yielding_tension - 1.0).abs() < 1e-12, "{c:?}");
+    assert!((c.yielded_tension - 1.0).abs() < 1e-12, "{c:?}");
+    // Back to the undeformed corners: the plastic strain leaves the cell in
+    // compression along z, so no tetrahedron is on a tension plane now, and
+    // each keeps its tension flag.
+    let c = look(&rest, &mut hist);
+    assert_eq!(c.yielding_tension, 0.0, "{c:?}");
+    assert!((c.yielded - 1.0).abs() < 1e-12 && (c.yielded_tension - 1.0).abs() < 1e-12, "{c:?}");
+    // Confined and sheared (a uniform compression 1e-3, the mean stress about
+    // -2.5e6 Pa, and u_x += gamma z): the shear stress about G gamma = 1.9e6
+    // Pa against the 1.27e6 Pa the plane allows at that mean stress, and the
+    // largest principal stress about -0.6e6 Pa, well below the cut-off:
+    // shear, none in tension.
+    let x = |i: usize| corners[i / 3][i % 3];
+    let shear = field(&|i| -1e-3 * x(i) + if i % 3 == 0 { 5e-3 * z(i) } else { 0.0 });
+    let mut hist = [TetPlastic::default(); MAX_TETS];
+    let c = look(&shear, &mut hist);
+    assert!(hist[..n].iter().any(|h| h.now == Yield::Shear), "{:?}", &hist[..n]);
+    assert!(hist[..n].iter().all(|h| !h.ever_tension), "{:?}", &hist[..n]);
+    assert!(c.yielding > 0.5 && c.yielding_tension == 0.0 && c.yielded_tension == 0.0, "{c:?}");
+}

@@ -268,13 +268,22 @@ impl Model {
     /// The summary of [`Self::plastic_cells`].
     pub fn plastic_summary(&self, cells: &[CellPlastic]) -> PlasticSummary {
         let el = &self.elements;
-        let mut out = PlasticSummary { volume: 0.0, yielding_volume: 0.0, yielded_volume: 0.0, max_plastic_shear: 0.0 };
+        let mut out = PlasticSummary {
+            volume: 0.0,
+            yielding_volume: 0.0,
+            yielded_volume: 0.0,
+            yielding_tension_volume: 0.0,
+            yielded_tension_volume: 0.0,
+            max_plastic_shear: 0.0,
+        };
         for (e, c) in cells.iter().enumerate() {
             if self.materials[el.material[e] as usize].law.strength().is_some() {
                 let v = el.volume[e];
                 out.volume += v;
                 out.yielding_volume += c.yielding * v;
                 out.yielded_volume += c.yielded * v;
+                out.yielding_tension_volume += c.yielding_tension * v;
+                out.yielded_tension_volume += c.yielded_tension * v;
                 out.max_plastic_shear = out.max_plastic_shear.max(c.plastic_shear);
             }
         }

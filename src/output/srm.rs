@@ -5,8 +5,8 @@
 //! model answered and its note) and, if a trial was unstable,
 //! `mechanism.vtu`: the point field `displacement` is the displacement since
 //! the elastic state at the smallest unstable factor, and with plastic
-//! blocks the cell fields `plastic_shear`, `yielding`, `yielded` mark the
-//! slip band. Staged like a run's files.
+//! blocks the cell fields of [`vtk::plastic_fields`] mark the slip band and
+//! the tension cracks. Staged like a run's files.
 
 use std::path::Path;
 

@@ -31,12 +31,16 @@ pub struct Frame<'a> {
 /// The cell fields of plastic blocks: `plastic_shear` (the volume-averaged
 /// plastic shear strain, FLAC's shear-strain measure), `yielding` and
 /// `yielded` (the volume fraction of each element's tetrahedra yielding now
-/// and ever).
+/// and ever, in shear or tension), `yielding_tension` and `yielded_tension`
+/// (the fraction of those in tension: `yielding - yielding_tension` yields in
+/// shear alone).
 pub fn plastic_fields(cells: &[crate::physics::plastic::CellPlastic]) -> Vec<(&'static str, Vec<f64>)> {
     vec![
         ("plastic_shear", cells.iter().map(|c| c.plastic_shear).collect()),
         ("yielding", cells.iter().map(|c| c.yielding).collect()),
         ("yielded", cells.iter().map(|c| c.yielded).collect()),
+        ("yielding_tension", cells.iter().map(|c| c.yielding_tension).collect()),
+        ("yielded_tension", cells.iter().map(|c| c.yielded_tension).collect()),
     ]
 }
 

@@ -62,6 +62,9 @@ pub struct TetPlastic {
     pub now: Yield,
     /// Whether it has ever yielded (in shear or tension).
     pub ever: bool,
+    /// Whether it has ever yielded in tension (FLAC's `tension-p`; `ever`
+    /// without it: shear only).
+    pub ever_tension: bool,
 }
 
 /// The history of one cell's tetrahedra (the front `n_tets` are used).
@@ -302,6 +305,7 @@ pub fn plastic_element_force(
                 h.eps_p[i] += dep[i];
             }
             h.ever = true;
+            h.ever_tension |= now == Yield::Tension;
         }
         h.now = now;
         let p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
@@ -500,7 +504,10 @@ fn shift_normal(sigma: [f64; 6], p: f64) -> [f64; 6] {
 }
 
 /// What a plastic cell looks like now: its volume-averaged stress (Pa,
-/// Voigt), the volume fraction of its tetrahedra yielding now and ever, and
+/// Voigt), the volume fraction of its tetrahedra yielding now and ever (in
+/// shear or tension), the fractions of those in tension (FLAC's
+/// `tension-n` and `tension-p`: a tetrahedron on a tension plane, with or
+/// without a shear plane; the rest of `yielding` is in shear alone), and
 /// its volume-averaged plastic shear strain `sqrt(2/3 e^p : e^p)` of the
 /// deviatoric plastic strain (FLAC's shear-strain measure).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -508,6 +515,8 @@ pub struct CellPlastic {
     pub stress: [f64; 6],
     pub yielding: f64,
     pub yielded: f64,
+    pub yielding_tension: f64,
+    pub yielded_tension: f64,
     pub plastic_shear: f64,
 }
 
@@ -539,8 +548,14 @@ pub fn cell_plastic(
         if h.now != Yield::Elastic {
             out.yielding += vt;
         }
+        if h.now == Yield::Tension {
+            out.yielding_tension += vt;
+        }
         if h.ever {
             out.yielded += vt;
+        }
+        if h.ever_tension {
+            out.yielded_tension += vt;
         }
         out.plastic_shear += vt * plastic_shear(h.eps_p);
         v += vt;
@@ -548,6 +563,8 @@ pub fn cell_plastic(
     out.stress = out.stress.map(|s| s / v);
     out.yielding /= v;
     out.yielded /= v;
+    out.yielding_tension /= v;
+    out.yielded_tension /= v;
     out.plastic_shear /= v;
     out
 }
