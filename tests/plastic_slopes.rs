@@ -54,11 +54,14 @@ fn check(slope: &PublishedSlope) {
     if !within {
         failures.push(format!("spread {:.1} % above {:.0} %", 100.0 * spread, 100.0 * GOAL_MESH_SPREAD));
     }
-    // The same run's rows, as `cdem reproduce --published-slopes` reports
+    // The same run's rows, as `cdem reproduce --published-slopes` asserts
     // them (not recorded: `cargo test`'s report has them skipped, below).
     if slope.key != "gl1" {
         for row in run.rows(slope) {
             println!("  row {}: {:?} {}", row.id, row.status(), row.note);
+            if !row.passed() {
+                failures.push(format!("row {}: {:?} {}", row.id, row.status(), row.note));
+            }
         }
     }
     assert!(failures.is_empty(), "{}: {failures:#?}", slope.name);

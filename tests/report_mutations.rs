@@ -246,6 +246,30 @@ fn a_skipped_asserted_row_fails() {
     let rows: Vec<Check> =
         all_passing().into_iter().map(|c| srm.iter().find(|s| s.id == c.id).cloned().unwrap_or(c)).collect();
     assert!(table_ci(rows, true).failures().is_empty());
+    // The heavy published slopes' rows are asserted, and the only asserted
+    // rows CI may skip (with the command that asserts them); an asserted
+    // row that is not heavy still may not.
+    let heavy = cdem::harness::suite::plastic::published_slopes_skipped(reg::SLOPES_SKIP);
+    assert!(heavy.iter().all(|c| reg::row(&c.id).is_asserted() && reg::row(&c.id).heavy), "{heavy:?}");
+    let rows: Vec<Check> =
+        all_passing().into_iter().map(|c| heavy.iter().find(|s| s.id == c.id).cloned().unwrap_or(c)).collect();
+    let t = table_ci(rows, true);
+    assert!(t.failures().is_empty(), "{:?}", t.failures());
+    assert!(t.markdown().contains("reproduce --published-slopes"), "the skip names the command");
+    assert!(reg::ROWS.iter().filter(|s| s.heavy).all(|s| s.id.starts_with("plastic/slopes/")));
+}
+
+/// A heavy row that was computed and missed fails like any asserted row:
+/// `cdem reproduce --published-slopes` exits non-zero on it.
+#[test]
+fn a_heavy_row_that_misses_fails() {
+    let id = "plastic/slopes/acads/prism-srm";
+    let miss = with(id, |_| reg::row(id).value(0.5, reg::ACADS_FE_FS, 1.0));
+    let (failed, status, _) = only_failure(&table_ci(miss, true));
+    assert_eq!((failed.as_str(), status), (id, Status::Fail));
+    let id = "plastic/slopes/acads/mesh-spread";
+    let wide = with(id, |_| reg::row(id).value(0.031, 0.0, 1.0));
+    assert_eq!(only_failure(&table(wide)).1, Status::Fail);
 }
 
 // ---------------------------------------------------------------------------

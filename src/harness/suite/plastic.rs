@@ -391,7 +391,7 @@ impl PublishedSlopeRun {
             rows.push(row);
         }
         let mut spread = reg::row(&ids[3])
-            .value(mesh_spread(&fs), reg::GOAL_MESH_SPREAD, self.seconds.iter().sum())
+            .value(mesh_spread(&fs), 0.0, self.seconds.iter().sum())
             .with_note(format!("hexahedra, prisms, tetrahedra: {fs:.4?} (references/plastic.md)"));
         if let Some(why) = rows.iter().find_map(|r| r.defect.clone()) {
             spread = spread.with_defect(why);
