@@ -326,3 +326,30 @@ fn run_on_plastic_blocks_writes_their_yield_state() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `cdem srm` on plastic blocks without tensile strength (Cheng et al.'s
+/// problem 61 on its coarse hexahedra, T = 0): `mechanism.vtu` says which
+/// elements yielded in tension at the mechanism (the crest's tension cracks:
+/// some elements wholly, none more than wholly) and `slip-band.png` is drawn.
+#[test]
+fn srm_on_plastic_blocks_marks_the_tension_cracks() {
+    let out = temp_dir("srm-plastic");
+    let o = Command::new(env!("CARGO_BIN_EXE_cdem"))
+        .args(["srm", "verification/plastic/cheng-61/c61-hex.toml", "--out", out.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let vtu = std::fs::read_to_string(out.join("mechanism.vtu")).unwrap();
+    let field = |name: &str| -> Vec<f64> {
+        let start = vtu.find(&format!("Name=\"{name}\"")).unwrap_or_else(|| panic!("no {name}"));
+        let body = &vtu[start..];
+        let body = &body[body.find('>').unwrap() + 1..body.find("</DataArray>").unwrap()];
+        body.split_whitespace().map(|v| v.parse().unwrap()).collect()
+    };
+    let (tension, yielded) = (field("yielded_tension"), field("yielded"));
+    assert_eq!(tension.len(), yielded.len());
+    assert!(tension.iter().zip(&yielded).all(|(t, y)| (0.0..=1.0).contains(t) && t <= y), "tension within yielded");
+    assert!(tension.iter().any(|&t| t >= 0.5), "no element yielded in tension at T = 0");
+    assert!(out.join("slip-band.png").exists());
+    let _ = std::fs::remove_dir_all(&out);
+}

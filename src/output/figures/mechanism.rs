@@ -4,7 +4,9 @@
 
 use std::path::Path;
 
-use super::plot::{contour_panels, ContourStyle, Panel, Quantity};
+use plotters::style::RED;
+
+use super::plot::{contour_panels, ContourStyle, Line, Panel, Quantity};
 use super::section::{element_mean_displacement, front_patches, water_lines, water_notes};
 use crate::drivers::SrmResult;
 use crate::error::Error;
@@ -24,33 +26,54 @@ pub fn mechanism_png(result: &SrmResult, model: &Model, path: &Path) -> Result<b
         (_, Some(hi)) => format!("strength reduction: no bracket; mechanism at F = {hi:.3}"),
         _ => "strength reduction".to_string(),
     };
-    section_with_water(path, &title, "|u - u_elastic|", Quantity::Displacement, patches, model)?;
+    section_with_water(path, &title, "|u - u_elastic|", Quantity::Displacement, patches, Vec::new(), None, model)?;
     Ok(true)
 }
 
 /// Writes `path` (PNG): the plastic shear strain (FLAC's measure, the
 /// volume average over each element's tetrahedra) at the smallest unstable
-/// factor, which marks the slip band through plastic blocks; returns
+/// factor, which marks the slip band through plastic blocks, with the
+/// elements that yielded in tension outlined (red: half or more of their
+/// tetrahedra on a tension plane at some step, the tension cracks); returns
 /// whether there was one to draw.
 pub fn slip_band_png(result: &SrmResult, model: &Model, path: &Path) -> Result<bool, Error> {
     let (Some(cells), Some(hi)) = (&result.mechanism_cells, result.bracket[1]) else { return Ok(false) };
     let patches = front_patches(model, |e| cells[e].plastic_shear);
+    let cracks: Vec<Line> = patches
+        .iter()
+        .zip(cells)
+        .filter(|(_, c)| c.yielded_tension >= 0.5)
+        .map(|(p, _)| Line {
+            points: p.corners.iter().chain(p.corners.first()).copied().collect(),
+            colour: RED,
+            width: 2,
+        })
+        .collect();
+    let note = (!cracks.is_empty()).then(|| {
+        format!("red outline: {} elements yielded in tension (half or more of their tetrahedra)", cracks.len())
+    });
     let title = format!("slip band: plastic shear strain at F = {hi:.3}");
-    section_with_water(path, &title, "plastic shear strain (-)", Quantity::Plain(""), patches, model)?;
+    section_with_water(path, &title, "plastic shear strain (-)", Quantity::Plain(""), patches, cracks, note, model)?;
     Ok(true)
 }
 
 /// One section panel with the model's water over it (blue, noted under the
-/// panel).
+/// panel) and further `lines` (with their `note`).
+#[allow(clippy::too_many_arguments)]
 fn section_with_water(
     path: &Path,
     title: &str,
     label: &str,
     quantity: Quantity,
     patches: Vec<super::plot::Patch>,
+    lines: Vec<Line>,
+    note: Option<String>,
     model: &Model,
 ) -> Result<(), Error> {
-    let notes = water_notes(model);
-    let panel = Panel { title: String::new(), patches, lines: water_lines(model) };
+    let mut notes = water_notes(model);
+    notes.extend(note);
+    let mut all = water_lines(model);
+    all.extend(lines);
+    let panel = Panel { title: String::new(), patches, lines: all };
     contour_panels(path, title, label, quantity, &[panel], &ContourStyle { notes, ..ContourStyle::default() })
 }
