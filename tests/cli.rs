@@ -351,5 +351,12 @@ fn srm_on_plastic_blocks_marks_the_tension_cracks() {
     assert!(tension.iter().zip(&yielded).all(|(t, y)| (0.0..=1.0).contains(t) && t <= y), "tension within yielded");
     assert!(tension.iter().any(|&t| t >= 0.5), "no element yielded in tension at T = 0");
     assert!(out.join("slip-band.png").exists());
+    // Each trial in srm.json: the volume that yielded in tension, within the yielded volume.
+    let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(out.join("srm.json")).unwrap()).unwrap();
+    let trials = j["trials"].as_array().unwrap();
+    let volumes =
+        |t: &serde_json::Value| (t["yielded_tension_volume"].as_f64().unwrap(), t["yielded_volume"].as_f64().unwrap());
+    assert!(trials.iter().map(volumes).all(|(t, y)| (0.0..=y).contains(&t)), "{trials:?}");
+    assert!(trials.iter().map(volumes).any(|(t, _)| t > 0.0), "{trials:?}");
     let _ = std::fs::remove_dir_all(&out);
 }

@@ -500,14 +500,16 @@ fn srm(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
         }
         SrmProgress::TrialEnd(t) => pb.suspend(|| {
             eprintln!(
-                "F = {:.4}: {:?}{} after {} steps, max displacement {:.3e} m, {} failed springs, {:.3e} m^3 yielded",
+                "F = {:.4}: {:?}{} after {} steps, max displacement {:.3e} m, {} failed springs, {:.3e} m^3 yielded \
+                 ({:.3e} m^3 in tension)",
                 t.factor,
                 t.outcome,
                 if t.foreseen { " (foreseen: the ratio decays too slowly for the budget)" } else { "" },
                 t.steps,
                 t.max_displacement,
                 t.failed_springs,
-                t.yielded_volume
+                t.yielded_volume,
+                t.yielded_tension_volume
             )
         }),
     })?;

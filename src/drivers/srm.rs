@@ -77,6 +77,9 @@ pub struct Trial {
     /// trial's end, the state it started from included (m^3; 0 without
     /// plastic blocks).
     pub yielded_volume: f64,
+    /// Of `yielded_volume`, the tetrahedra that yielded in tension at some
+    /// step (m^3: the tension cracks).
+    pub yielded_tension_volume: f64,
     /// The stable factor whose end state the trial started from (None: the
     /// elastic state).
     pub started_from: Option<f64>,
@@ -319,7 +322,9 @@ impl Reduction {
         let r = failure::run(&mut self.plan, &self.model, &mut state, &self.params, false, watch)?;
         let since: Vec<f64> = state.u.iter().zip(&self.elastic.u).map(|(a, b)| a - b).collect();
         let cells = self.model.plastic_cells(&state.rock, &state.u);
-        let yielded_volume = cells.as_deref().map_or(0.0, |c| self.model.plastic_summary(c).yielded_volume);
+        let plastic = cells.as_deref().map(|c| self.model.plastic_summary(c));
+        let (yielded_volume, yielded_tension_volume) =
+            plastic.map_or((0.0, 0.0), |p| (p.yielded_volume, p.yielded_tension_volume));
         let trial = Trial {
             factor,
             outcome: r.end,
@@ -328,6 +333,7 @@ impl Reduction {
             max_displacement: max_displacement(&since),
             failed_springs: failed_springs(&state.springs.status).total(),
             yielded_volume,
+            yielded_tension_volume,
             started_from,
             setup_s,
             wall_s: t.elapsed().as_secs_f64(),
