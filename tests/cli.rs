@@ -139,8 +139,17 @@ fn edited_column(name: &str, edit: impl Fn(String) -> String) -> (PathBuf, PathB
 }
 
 fn cdem_run(scene: &std::path::Path, out: &std::path::Path) -> std::process::Output {
+    cdem("run", scene, out)
+}
+
+fn cdem_srm(scene: &std::path::Path, out: &std::path::Path) -> std::process::Output {
+    cdem("srm", scene, out)
+}
+
+/// `cdem COMMAND SCENE --out OUT`.
+fn cdem(command: &str, scene: &std::path::Path, out: &std::path::Path) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_cdem"))
-        .args(["run", scene.to_str().unwrap(), "--out", out.to_str().unwrap()])
+        .args([command, scene.to_str().unwrap(), "--out", out.to_str().unwrap()])
         .output()
         .unwrap()
 }
@@ -229,11 +238,7 @@ fn an_unknown_group_lists_the_groups_there_are() {
 #[test]
 fn lem_runs_on_a_scene_and_refuses_one_without_a_lem_table() {
     let out = temp_dir("lem-scene").join("lem.json");
-    let o = Command::new(env!("CARGO_BIN_EXE_cdem"))
-        .args(["lem", "verification/cases/slope/slope.toml", "--out"])
-        .arg(&out)
-        .output()
-        .unwrap();
+    let o = cdem("lem", "verification/cases/slope/slope.toml".as_ref(), &out);
     let text = String::from_utf8_lossy(&o.stdout);
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(text.lines().any(|l| l.starts_with("bishop     1.0888")), "{text}");
@@ -260,10 +265,7 @@ fn lem_runs_on_a_scene_and_refuses_one_without_a_lem_table() {
 #[test]
 fn srm_writes_fs_bracket_trials_and_the_mechanism() {
     let out = temp_dir("srm");
-    let o = Command::new(env!("CARGO_BIN_EXE_cdem"))
-        .args(["srm", "verification/cases/block-srm/block-srm-cohesion.toml", "--out", out.to_str().unwrap()])
-        .output()
-        .unwrap();
+    let o = cdem_srm("verification/cases/block-srm/block-srm-cohesion.toml".as_ref(), &out);
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(out.join("srm.json")).unwrap()).unwrap();
     let (lo, hi) = (j["bracket"][0].as_f64().unwrap(), j["bracket"][1].as_f64().unwrap());
@@ -285,10 +287,7 @@ fn srm_writes_fs_bracket_trials_and_the_mechanism() {
 #[test]
 fn srm_without_a_breakable_interface_is_invalid_input() {
     let (scene, out) = edited_column("srm-none", |t| t);
-    let o = Command::new(env!("CARGO_BIN_EXE_cdem"))
-        .args(["srm", scene.to_str().unwrap(), "--out", out.to_str().unwrap()])
-        .output()
-        .unwrap();
+    let o = cdem_srm(&scene, &out);
     assert_eq!(o.status.code(), Some(2), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(String::from_utf8_lossy(&o.stderr).contains("scene key `interface`"));
     assert!(!out.exists());
@@ -334,10 +333,7 @@ fn run_on_plastic_blocks_writes_their_yield_state() {
 #[test]
 fn srm_on_plastic_blocks_marks_the_tension_cracks() {
     let out = temp_dir("srm-plastic");
-    let o = Command::new(env!("CARGO_BIN_EXE_cdem"))
-        .args(["srm", "verification/plastic/cheng-61/c61-hex.toml", "--out", out.to_str().unwrap()])
-        .output()
-        .unwrap();
+    let o = cdem_srm("verification/plastic/cheng-61/c61-hex.toml".as_ref(), &out);
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     let vtu = std::fs::read_to_string(out.join("mechanism.vtu")).unwrap();
     let field = |name: &str| -> Vec<f64> {

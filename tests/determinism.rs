@@ -59,12 +59,18 @@ impl Watch for StopAt {
         if phase != Phase::Failure || view.steps < self.at {
             return ControlFlow::Continue(());
         }
-        let s = view.state;
-        self.bits = [&s.u, &s.v, &s.f_int].into_iter().flatten().map(|x| x.to_bits()).collect();
-        self.bits.extend(s.springs.slip.iter().flatten().map(|x| x.to_bits()));
-        self.bits.extend(s.springs.status.iter().map(|&st| st as u64));
+        self.bits = state_bits(view.state);
         ControlFlow::Break(())
     }
+}
+
+/// A state's displacements, velocities and forces and each spring's slip
+/// and status, as raw bits.
+fn state_bits(s: &cdem::solver::State) -> Vec<u64> {
+    let mut bits: Vec<u64> = [&s.u, &s.v, &s.f_int].into_iter().flatten().map(|x| x.to_bits()).collect();
+    bits.extend(s.springs.slip.iter().flatten().map(|x| x.to_bits()));
+    bits.extend(s.springs.status.iter().map(|&st| st as u64));
+    bits
 }
 
 /// The first `steps` steps of the strength-reduction trial at `factor` of
@@ -83,7 +89,7 @@ fn trial_fingerprint(scene: &str, factor: f64, steps: usize, threads: usize) -> 
         assert!(t.failed_springs > 0 || t.yielded_volume > 0.0, "{}: nothing failed or yielded", path.display());
         let mut bits = watch.bits;
         bits.extend([elastic_steps as u64, t.steps as u64, t.failed_springs as u64]);
-        bits.extend([t.max_displacement, t.yielded_volume].map(f64::to_bits));
+        bits.extend([t.max_displacement, t.yielded_volume, t.yielded_tension_volume].map(f64::to_bits));
         for c in run.cells.iter().flatten() {
             bits.extend(c.stress.map(f64::to_bits));
             bits.extend(
@@ -99,7 +105,9 @@ fn trial_fingerprint(scene: &str, factor: f64, steps: usize, threads: usize) -> 
 /// pressure and smoothed strain of tetrahedra (Griffiths & Lane: 999
 /// cells): the same bits with one, two and three threads. Both meshes are
 /// large enough for rayon to split every per-cell and per-node pass
-/// (`MIN_LEN` 256 in solver::forces).
+/// (`MIN_LEN` 256 in solver::forces), but with two threads it does not
+/// always: a fault put into the tetrahedra's vertex averages went unseen with
+/// two threads and was caught with three.
 #[test]
 fn a_plastic_trial_has_the_same_bits_with_one_two_and_three_threads() {
     for (scene, factor) in
@@ -127,9 +135,7 @@ fn a_wet_failure_phase_has_the_same_bits_with_one_and_three_threads() {
         let f = r.failure.as_ref().unwrap();
         assert!(r.model.water.is_some(), "the scene has no water");
         let mut bits: Vec<u64> = vec![r.summary.steps as u64, f.report.steps as u64];
-        bits.extend([&r.state.u, &r.state.v, &r.state.f_int].into_iter().flatten().map(|x| x.to_bits()));
-        bits.extend(r.state.springs.slip.iter().flatten().map(|x| x.to_bits()));
-        bits.extend(r.state.springs.status.iter().map(|&s| s as u64));
+        bits.extend(state_bits(&r.state));
         bits
     };
     let one = bits(1);

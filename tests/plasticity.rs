@@ -169,6 +169,37 @@ const DISTORTED_HEX: [[f64; 3]; 8] = [
     [0.1, 1., 1.],
 ];
 
+/// [`DISTORTED_HEX`] of a plastic rock (E = 1 GPa, nu = 0.3; c = 20 kPa,
+/// phi = 30 deg, T = 10 kPa, psi = 0) with the operators the one-cell
+/// checks use: its condensed operators, its 24 tetrahedra and their
+/// topology, and its yield surface.
+struct PlasticHex {
+    material: cdem::physics::material::Material,
+    ops: cdem::physics::element::ElementOperators,
+    topo: cdem::physics::tet_operator::TetTopology,
+    tets: Vec<cdem::physics::plastic::TetB>,
+    surface: cdem::physics::mohr_coulomb::MohrCoulomb,
+}
+
+fn plastic_hex() -> PlasticHex {
+    use cdem::mesh::shape::CellKind;
+    use cdem::physics::material::{Material, MaterialLaw, YoungPoisson};
+    let strength = RockStrength { cohesion: 2e4, tan_phi: 30f64.to_radians().tan(), tensile: 1e4, tan_psi: 0.0 };
+    let material = Material {
+        lame: YoungPoisson { young: 1e9, poisson: 0.3 }.into(),
+        density: 2000.0,
+        law: MaterialLaw::MohrCoulomb(strength),
+    };
+    let ops = cdem::physics::element::element_operators(CellKind::Hex8, &DISTORTED_HEX, &material).unwrap();
+    PlasticHex {
+        material,
+        ops,
+        topo: cdem::physics::tet_operator::TetTopology::of(CellKind::Hex8),
+        tets: cdem::physics::plastic::plastic_operator(CellKind::Hex8, &DISTORTED_HEX),
+        surface: cdem::physics::mohr_coulomb::MohrCoulomb::of(&strength),
+    }
+}
+
 /// One full pass of a lone plastic cell (its nodes numbered from 0, its own
 /// volumetric strain, no pore water): its corner forces, its history advanced.
 fn cell_pass(
@@ -239,25 +270,13 @@ fn the_elastic_plastic_element_is_its_mixed_stiffness() {
 #[test]
 fn the_elastic_screen_lets_no_tetrahedron_yield_inside_its_radius() {
     use cdem::mesh::shape::CellKind;
-    use cdem::physics::element::{element_operators, pack_symmetric};
-    use cdem::physics::material::{Material, MaterialLaw, YoungPoisson};
-    use cdem::physics::mohr_coulomb::{MohrCoulomb, Yield};
-    use cdem::physics::plastic::{
-        plastic_operator, screen_radius, stress_sensitivity, CellHistory, Screen, TetPlastic, MAX_TETS,
-    };
-    use cdem::physics::tet_operator::TetTopology;
-    let strength = RockStrength { cohesion: 2e4, tan_phi: 30f64.to_radians().tan(), tensile: 1e4, tan_psi: 0.0 };
-    let material = Material {
-        lame: YoungPoisson { young: 1e9, poisson: 0.3 }.into(),
-        density: 2000.0,
-        law: MaterialLaw::MohrCoulomb(strength),
-    };
+    use cdem::physics::element::pack_symmetric;
+    use cdem::physics::mohr_coulomb::Yield;
+    use cdem::physics::plastic::{screen_radius, stress_sensitivity, CellHistory, Screen, TetPlastic, MAX_TETS};
+    let PlasticHex { material, ops, topo, tets, surface } = plastic_hex();
     let corners = DISTORTED_HEX.to_vec();
     let kind = CellKind::Hex8;
-    let ops = element_operators(kind, &corners, &material).unwrap();
     let k = pack_symmetric(&ops.k, 8);
-    let (topo, tets) = (TetTopology::of(kind), plastic_operator(kind, &corners));
-    let surface = MohrCoulomb::of(&strength);
     let g = stress_sensitivity(&topo, &tets, material.lame);
     let nodes: Vec<u32> = (0..8).collect();
     let pass = |u: &[f64], hist: &mut CellHistory| cell_pass(kind, &tets, &ops.grad, material.lame, &surface, u, hist);
@@ -426,22 +445,11 @@ fn the_smoothed_tetrahedra_forces_are_the_virtual_work_of_their_strain() {
 #[test]
 fn a_cell_says_which_tetrahedra_yield_in_shear_and_which_in_tension() {
     use cdem::mesh::shape::CellKind;
-    use cdem::physics::element::element_operators;
-    use cdem::physics::material::{Material, MaterialLaw, YoungPoisson};
-    use cdem::physics::mohr_coulomb::{MohrCoulomb, Yield};
-    use cdem::physics::plastic::{cell_plastic, plastic_operator, CellPlastic, TetPlastic, Volumetric, MAX_TETS};
-    use cdem::physics::tet_operator::TetTopology;
-    let strength = RockStrength { cohesion: 2e4, tan_phi: 30f64.to_radians().tan(), tensile: 1e4, tan_psi: 0.0 };
-    let material = Material {
-        lame: YoungPoisson { young: 1e9, poisson: 0.3 }.into(),
-        density: 2000.0,
-        law: MaterialLaw::MohrCoulomb(strength),
-    };
+    use cdem::physics::mohr_coulomb::Yield;
+    use cdem::physics::plastic::{cell_plastic, CellPlastic, TetPlastic, Volumetric, MAX_TETS};
+    let PlasticHex { material, ops, topo, tets, surface } = plastic_hex();
     let corners = DISTORTED_HEX.to_vec();
     let kind = CellKind::Hex8;
-    let ops = element_operators(kind, &corners, &material).unwrap();
-    let (topo, tets) = (TetTopology::of(kind), plastic_operator(kind, &corners));
-    let surface = MohrCoulomb::of(&strength);
     let nodes: Vec<u32> = (0..8).collect();
     let n = tets.len();
     // One pass at `u`, then the cell as the outputs see it.

@@ -200,7 +200,7 @@ fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Err
 fn published(rep: &mut Report, keys: &[String], progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
     let asked = |s: &reg::PublishedSlope| keys.iter().any(|k| k == s.key);
     for slope in suite::plastic::heavy_published_slopes().filter(|s| !asked(s)) {
-        rep.checks.extend(suite::plastic::published_slope_skipped(slope, PUBLISHED_SLOPES_ASKED));
+        rep.checks.extend(suite::plastic::published_slope_skipped(slope, reg::SLOPES_SKIP));
     }
     if keys.is_empty() {
         return Ok(());
@@ -231,8 +231,6 @@ fn published(rep: &mut Report, keys: &[String], progress: &mut dyn FnMut(&str)) 
     let _ = writeln!(rep.md);
     Ok(())
 }
-const PUBLISHED_SLOPES_ASKED: &str =
-    "heavy (about an hour on 2 cores): cargo run --release -- reproduce --published-slopes";
 
 /// Pore water (no paper figure): the submerged column against Terzaghi's
 /// effective stress, the infinite slope and Hoek & Bray's plane failure

@@ -26,7 +26,7 @@ pub fn mechanism_png(result: &SrmResult, model: &Model, path: &Path) -> Result<b
         (_, Some(hi)) => format!("strength reduction: no bracket; mechanism at F = {hi:.3}"),
         _ => "strength reduction".to_string(),
     };
-    section_with_water(path, &title, "|u - u_elastic|", Quantity::Displacement, patches, Vec::new(), None, model)?;
+    section_with_water(path, &title, "|u - u_elastic|", Quantity::Displacement, patches, None, model)?;
     Ok(true)
 }
 
@@ -49,31 +49,33 @@ pub fn slip_band_png(result: &SrmResult, model: &Model, path: &Path) -> Result<b
             width: 2,
         })
         .collect();
-    let note = (!cracks.is_empty()).then(|| {
-        format!("red outline: {} elements yielded in tension (half or more of their tetrahedra)", cracks.len())
+    let overlay = (!cracks.is_empty()).then(|| {
+        let note =
+            format!("red outline: {} elements yielded in tension (half or more of their tetrahedra)", cracks.len());
+        (cracks, note)
     });
     let title = format!("slip band: plastic shear strain at F = {hi:.3}");
-    section_with_water(path, &title, "plastic shear strain (-)", Quantity::Plain(""), patches, cracks, note, model)?;
+    section_with_water(path, &title, "plastic shear strain (-)", Quantity::Plain(""), patches, overlay, model)?;
     Ok(true)
 }
 
 /// One section panel with the model's water over it (blue, noted under the
-/// panel) and further `lines` (with their `note`).
-#[allow(clippy::too_many_arguments)]
+/// panel) and an `overlay`: further lines and the note under the panel that
+/// says what they mark.
 fn section_with_water(
     path: &Path,
     title: &str,
     label: &str,
     quantity: Quantity,
     patches: Vec<super::plot::Patch>,
-    lines: Vec<Line>,
-    note: Option<String>,
+    overlay: Option<(Vec<Line>, String)>,
     model: &Model,
 ) -> Result<(), Error> {
-    let mut notes = water_notes(model);
-    notes.extend(note);
-    let mut all = water_lines(model);
-    all.extend(lines);
-    let panel = Panel { title: String::new(), patches, lines: all };
+    let (mut lines, mut notes) = (water_lines(model), water_notes(model));
+    if let Some((more, note)) = overlay {
+        lines.extend(more);
+        notes.push(note);
+    }
+    let panel = Panel { title: String::new(), patches, lines };
     contour_panels(path, title, label, quantity, &[panel], &ContourStyle { notes, ..ContourStyle::default() })
 }
