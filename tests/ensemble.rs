@@ -182,3 +182,34 @@ fn srm_members_match_the_analytic_fs_of_their_draws() {
     let phis: Vec<f64> = records.iter().map(|r| r.draws[0].value).collect();
     assert!(phis.windows(2).all(|w| w[0] != w[1]), "draws differ: {phis:?}");
 }
+
+/// A member that runs CDEM and the strength reduction (`analyses = ["cdem",
+/// "srm"]`) takes its run's phase 2 over as the search's trial at F = 1
+/// (`srm::Phase2Run`) instead of running it again: the search must find
+/// what `cdem srm` on the member's scene finds, trial for trial, bit for
+/// bit, with the first trial taken over. The member is the first of the
+/// slip-surface slope's ensemble that `cdem perf` times.
+#[test]
+fn a_member_s_run_is_its_strength_reduction_s_first_trial() {
+    use cdem::drivers::ensemble::MemberInput;
+    use cdem::drivers::srm::{run_srm_after, Phase2Run};
+    let input = EnsembleInput::load(Path::new(cdem::harness::perf::ensemble::PAPER_SLOPE_SLIP_SRM)).unwrap();
+    let (seed, draws) = input.draws(input.default_seed(), 0).unwrap();
+    let MemberInput::Scene(scene) = input.member_input(seed, &draws).unwrap() else { panic!("a scene") };
+    let run = cdem::drivers::run_scene(&scene, &mut |_, _| {}).unwrap();
+    let phase2 = Phase2Run { failure: run.failure.as_ref().unwrap(), state: &run.state };
+    let (after, _) = run_srm_after(&scene, phase2, &mut |_| {}).unwrap();
+    let (alone, _) = cdem::drivers::run_srm(&scene, &mut |_| {}).unwrap();
+    assert!(after.trials[0].from_run && after.trials[0].factor == 1.0, "{:?}", after.trials[0]);
+    assert!(after.trials[1..].iter().chain(&alone.trials).all(|t| !t.from_run));
+    assert_eq!((after.fs, after.bracket), (alone.fs, alone.bracket));
+    assert_eq!(after.trials.len(), alone.trials.len());
+    for (a, b) in after.trials.iter().zip(&alone.trials) {
+        let key = |t: &cdem::drivers::Trial| {
+            (t.factor.to_bits(), t.outcome, t.steps, t.max_displacement.to_bits(), t.failed_springs, t.started_from)
+        };
+        assert_eq!(key(a), key(b), "trial at F = {}", a.factor);
+    }
+    let bits = |m: &Option<Vec<f64>>| m.as_ref().unwrap().iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    assert_eq!(bits(&after.mechanism), bits(&alone.mechanism), "the mechanism");
+}

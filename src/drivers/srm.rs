@@ -88,6 +88,10 @@ pub struct Trial {
     pub setup_s: f64,
     /// The whole trial, setup included (s).
     pub wall_s: f64,
+    /// The trial was phase 2 of the same scene's run, taken over rather than
+    /// run again ([`Phase2Run`]; its `setup_s` and `wall_s` are then 0).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub from_run: bool,
 }
 
 impl Trial {
@@ -102,6 +106,21 @@ pub struct TrialRun {
     pub trial: Trial,
     pub since: Vec<f64>,
     pub cells: Option<Vec<CellPlastic>>,
+}
+
+/// Phase 2 of a run of the scene a strength reduction searches
+/// ([`super::run_scene`]). With the strengths as given, from the same
+/// elastic state and under the same plan, it is the search's first trial,
+/// at F = 1: an ensemble member that runs both (`analyses = ["cdem",
+/// "srm"]`) need not run it twice. [`Reduction::adopt`] takes it only where
+/// that holds: elastic blocks (plastic ones add the foresight rule to the
+/// trials, not to phase 2) and the same elastic state, bit for bit; else
+/// the trial runs.
+#[derive(Clone, Copy)]
+pub struct Phase2Run<'a> {
+    pub failure: &'a failure::FailureResult,
+    /// The state phase 2 ended in.
+    pub state: &'a State,
 }
 
 /// What the strength reduction found (`srm.json`).
@@ -337,11 +356,42 @@ impl Reduction {
             started_from,
             setup_s,
             wall_s: t.elapsed().as_secs_f64(),
+            from_run: false,
         };
         if trial.stable() && self.stable.as_ref().is_none_or(|(f, _)| *f < factor) {
             self.stable = Some((factor, state));
         }
         Ok(TrialRun { trial, since, cells })
+    }
+
+    /// `run` as the trial at F = 1 if it is that trial ([`Phase2Run`]):
+    /// None if the model has plastic blocks or `run` started from another
+    /// elastic state.
+    pub fn adopt(&mut self, run: Phase2Run) -> Option<TrialRun> {
+        let bits =
+            |a: &[f64], b: &[f64]| a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits());
+        if self.model.has_plastic_blocks() || !bits(&run.failure.u_elastic, &self.elastic.u) {
+            return None;
+        }
+        let since: Vec<f64> = run.state.u.iter().zip(&self.elastic.u).map(|(a, b)| a - b).collect();
+        let trial = Trial {
+            factor: 1.0,
+            outcome: run.failure.end,
+            foreseen: run.failure.report.stop == Stop::Foreseen,
+            steps: run.failure.report.steps,
+            max_displacement: max_displacement(&since),
+            failed_springs: failed_springs(&run.state.springs.status).total(),
+            yielded_volume: 0.0,
+            yielded_tension_volume: 0.0,
+            started_from: None,
+            setup_s: 0.0,
+            wall_s: 0.0,
+            from_run: true,
+        };
+        if trial.stable() && self.stable.as_ref().is_none_or(|(f, _)| *f < 1.0) {
+            self.stable = Some((1.0, run.state.clone()));
+        }
+        Some(TrialRun { trial, since, cells: None })
     }
 
     /// The step budget of one trial.
@@ -372,6 +422,29 @@ pub fn run_srm_with(
     foresight: Option<Foresight>,
     progress: &mut dyn FnMut(SrmProgress),
 ) -> Result<(SrmResult, Model), Error> {
+    search(scene, start, foresight, None, progress)
+}
+
+/// [`run_srm`] after a run of the same scene, whose phase 2 is taken over
+/// as the trial at F = 1 where it is that trial ([`Phase2Run`]): the same
+/// result, one trial fewer to run.
+pub fn run_srm_after(
+    scene: &Scene,
+    run: Phase2Run,
+    progress: &mut dyn FnMut(SrmProgress),
+) -> Result<(SrmResult, Model), Error> {
+    search(scene, TrialStart::Warm, Some(Foresight::TRIALS), Some(run), progress)
+}
+
+/// The search of the module documentation; `given` may stand in for the
+/// trial at F = 1.
+fn search(
+    scene: &Scene,
+    start: TrialStart,
+    foresight: Option<Foresight>,
+    mut given: Option<Phase2Run>,
+    progress: &mut dyn FnMut(SrmProgress),
+) -> Result<(SrmResult, Model), Error> {
     let t0 = std::time::Instant::now();
     let (mut red, elastic_steps) = Reduction::with_foresight(scene, start, foresight)?;
     progress(SrmProgress::Elastic(elastic_steps));
@@ -382,7 +455,11 @@ pub fn run_srm_with(
     type Outcome = (bool, (Vec<f64>, Option<Vec<CellPlastic>>));
     let mut run = |f: f64, trials: &mut Vec<Trial>, progress: &mut dyn FnMut(SrmProgress)| -> Result<Outcome, Error> {
         progress(SrmProgress::TrialStart(f));
-        let TrialRun { trial: t, since, cells } = red.trial(f, &mut Forward(progress))?;
+        let adopted = given.take().filter(|_| f == 1.0).and_then(|g| red.adopt(g));
+        let TrialRun { trial: t, since, cells } = match adopted {
+            Some(run) => run,
+            None => red.trial(f, &mut Forward(progress))?,
+        };
         progress(SrmProgress::TrialEnd(&t));
         trials.push(t);
         Ok((t.stable(), (since, cells)))

@@ -23,6 +23,7 @@ use std::path::{Path, PathBuf};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
+use super::srm::Phase2Run;
 use crate::error::SceneError;
 use crate::lem::{self, LemInput, Method, Mode};
 use crate::mesh::perturb::SplitMix64;
@@ -409,6 +410,9 @@ pub fn run_member(
         }
         _ => None,
     };
+    // The CDEM run, kept for the strength reduction: its phase 2 is the
+    // search's trial at F = 1 (`srm::Phase2Run`).
+    let mut cdem_run = None;
     if let (true, Some(scene)) = (input.analyses.contains(&Analysis::Cdem), &scene) {
         // Eq. 21 on the mean critical circle, as the LEM (`lem_surface = "critical"`),
         // unless the scene names its own circle.
@@ -445,9 +449,16 @@ pub fn run_member(
             }
         }
         record.cdem = Some(m);
+        cdem_run = Some(run);
     }
     if let (true, Some(scene)) = (input.analyses.contains(&Analysis::Srm), &scene) {
-        let (r, _) = super::run_srm(scene, &mut |_| {}).map_err(member_error)?;
+        let phase2 =
+            cdem_run.as_ref().and_then(|run| Some(Phase2Run { failure: run.failure.as_ref()?, state: &run.state }));
+        let (r, _) = match phase2 {
+            Some(run) => super::srm::run_srm_after(scene, run, &mut |_| {}),
+            None => super::run_srm(scene, &mut |_| {}),
+        }
+        .map_err(member_error)?;
         record.fs = r.fs;
         record.srm = Some(SrmMember { fs: r.fs, bracket: r.bracket, trials: r.trials.len() });
     }
