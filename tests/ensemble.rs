@@ -212,4 +212,15 @@ fn a_member_s_run_is_its_strength_reduction_s_first_trial() {
     }
     let bits = |m: &Option<Vec<f64>>| m.as_ref().unwrap().iter().map(|x| x.to_bits()).collect::<Vec<_>>();
     assert_eq!(bits(&after.mechanism), bits(&alone.mechanism), "the mechanism");
+    // The phase 2 is not that trial, and is not taken: one that went on with
+    // phase 1's solver (its damping state), or one from another elastic state.
+    assert!(!run.failure.as_ref().unwrap().continued, "PCG's phase 1 hands no solver over");
+    let red = || cdem::drivers::srm::Reduction::new(&scene, cdem::drivers::srm::TrialStart::Warm).unwrap().0;
+    let mut failure = run.failure.unwrap();
+    assert!(red().adopt(Phase2Run { failure: &failure, state: &run.state }).is_some());
+    failure.continued = true;
+    assert!(red().adopt(Phase2Run { failure: &failure, state: &run.state }).is_none(), "a continued solver");
+    failure.continued = false;
+    failure.u_elastic[7] = f64::from_bits(failure.u_elastic[7].to_bits() ^ 1);
+    assert!(red().adopt(Phase2Run { failure: &failure, state: &run.state }).is_none(), "another elastic state");
 }

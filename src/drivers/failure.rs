@@ -48,6 +48,9 @@ pub struct FailureResult {
     pub failed_at: Vec<Option<usize>>,
     /// Frames where the failure state changed, and the last one.
     pub frames: Vec<Frame>,
+    /// Phase 2 went on with phase 1's solver and its damping state
+    /// ([`PhasePlan::continued`]), not a newly built one.
+    pub continued: bool,
 }
 
 /// Window of the sliding rule, in element crossings `n_c`.
@@ -156,5 +159,5 @@ pub fn run(
         Stop::Sliding => EndState::GlobalSliding,
         Stop::Budget | Stop::Foreseen | Stop::Caller => EndState::Undecided,
     };
-    Ok(FailureResult { report, end, u_elastic, stages, failed_at, frames })
+    Ok(FailureResult { report, end, u_elastic, stages, failed_at, frames, continued: plan.continued })
 }

@@ -114,8 +114,10 @@ pub struct TrialRun {
 /// at F = 1: an ensemble member that runs both (`analyses = ["cdem",
 /// "srm"]`) need not run it twice. [`Reduction::adopt`] takes it only where
 /// that holds: elastic blocks (plastic ones add the foresight rule to the
-/// trials, not to phase 2) and the same elastic state, bit for bit; else
-/// the trial runs.
+/// trials, not to phase 2), the same elastic state, bit for bit, and a
+/// phase 2 that started with a new solver, as a trial does (after a DR
+/// phase 1 it goes on with that solver's damping state); else the trial
+/// runs.
 #[derive(Clone, Copy)]
 pub struct Phase2Run<'a> {
     pub failure: &'a failure::FailureResult,
@@ -365,12 +367,13 @@ impl Reduction {
     }
 
     /// `run` as the trial at F = 1 if it is that trial ([`Phase2Run`]):
-    /// None if the model has plastic blocks or `run` started from another
-    /// elastic state.
+    /// None if the model has plastic blocks, if `run` started from another
+    /// elastic state, or if its phase 2 went on with phase 1's solver (a
+    /// trial starts with a new one's damping state).
     pub fn adopt(&mut self, run: Phase2Run) -> Option<TrialRun> {
         let bits =
             |a: &[f64], b: &[f64]| a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits());
-        if self.model.has_plastic_blocks() || !bits(&run.failure.u_elastic, &self.elastic.u) {
+        if self.model.has_plastic_blocks() || run.failure.continued || !bits(&run.failure.u_elastic, &self.elastic.u) {
             return None;
         }
         let since: Vec<f64> = run.state.u.iter().zip(&self.elastic.u).map(|(a, b)| a - b).collect();

@@ -33,6 +33,9 @@ pub struct PhasePlan {
     pub history_every: usize,
     /// The foresight rule of its relaxations (strength-reduction trials).
     pub foresight: Option<Foresight>,
+    /// Phase 2 took phase 1's solver over, its damping state included
+    /// ([`Self::failure`]); false for a newly built solver.
+    pub continued: bool,
 }
 
 impl PhasePlan {
@@ -48,7 +51,7 @@ impl PhasePlan {
             ElasticSolver::Pcg => (Method::Pcg(Box::new(Pcg::new(model)?)), true),
         };
         let budget = budget::step_budget(model, params, block, params.max_steps, 1);
-        Ok(Self { method, budget, tolerance: params.tolerance, history_every, foresight: None })
+        Ok(Self { method, budget, tolerance: params.tolerance, history_every, foresight: None, continued: false })
     }
 
     /// Phase 2 (and each strength-reduction trial): dynamic relaxation with
@@ -65,9 +68,9 @@ impl PhasePlan {
         solver: Option<Solver>,
     ) -> Result<Self, SolveError> {
         let block = params.block_masses(block_mass);
-        let solver = match solver {
-            Some(s) if s.inertia().is_block() == block => s,
-            _ => Solver::with_masses(model, params.clone(), block)?,
+        let (solver, continued) = match solver {
+            Some(s) if s.inertia().is_block() == block => (s, true),
+            _ => (Solver::with_masses(model, params.clone(), block)?, false),
         };
         let budget = budget::step_budget(model, params, block, max_steps, PHASE2_RESPONSE_TIMES);
         Ok(Self {
@@ -76,6 +79,7 @@ impl PhasePlan {
             tolerance: params.tolerance,
             history_every,
             foresight: None,
+            continued,
         })
     }
 
