@@ -341,6 +341,35 @@ impl Reduction {
         self.plan.restart();
         let setup_s = t.elapsed().as_secs_f64();
         let r = failure::run(&mut self.plan, &self.model, &mut state, &self.params, false, watch)?;
+        Ok(self.finish(factor, &r, state, started_from, setup_s, Some(t)))
+    }
+
+    /// `run` as the trial at F = 1 if it is that trial ([`Phase2Run`]):
+    /// None if the model has plastic blocks, if `run` started from another
+    /// elastic state, or if its phase 2 went on with phase 1's solver (a
+    /// trial starts with a new one's damping state).
+    pub fn adopt(&mut self, run: Phase2Run) -> Option<TrialRun> {
+        let bits =
+            |a: &[f64], b: &[f64]| a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits());
+        if self.model.has_plastic_blocks() || run.failure.continued || !bits(&run.failure.u_elastic, &self.elastic.u) {
+            return None;
+        }
+        Some(self.finish(1.0, run.failure, run.state.clone(), None, 0.0, None))
+    }
+
+    /// The record of the trial at `factor` whose phase 2 `r` left `state`,
+    /// started from the stable factor `started_from` (None: the elastic
+    /// state) at `started` (None: taken over from a run, [`Self::adopt`]);
+    /// a stable trial's state is kept for the warm starts above it.
+    fn finish(
+        &mut self,
+        factor: f64,
+        r: &failure::FailureResult,
+        state: State,
+        started_from: Option<f64>,
+        setup_s: f64,
+        started: Option<std::time::Instant>,
+    ) -> TrialRun {
         let since: Vec<f64> = state.u.iter().zip(&self.elastic.u).map(|(a, b)| a - b).collect();
         let cells = self.model.plastic_cells(&state.rock, &state.u);
         let plastic = cells.as_deref().map(|c| self.model.plastic_summary(c));
@@ -357,44 +386,13 @@ impl Reduction {
             yielded_tension_volume,
             started_from,
             setup_s,
-            wall_s: t.elapsed().as_secs_f64(),
-            from_run: false,
+            wall_s: started.map_or(0.0, |t| t.elapsed().as_secs_f64()),
+            from_run: started.is_none(),
         };
         if trial.stable() && self.stable.as_ref().is_none_or(|(f, _)| *f < factor) {
             self.stable = Some((factor, state));
         }
-        Ok(TrialRun { trial, since, cells })
-    }
-
-    /// `run` as the trial at F = 1 if it is that trial ([`Phase2Run`]):
-    /// None if the model has plastic blocks, if `run` started from another
-    /// elastic state, or if its phase 2 went on with phase 1's solver (a
-    /// trial starts with a new one's damping state).
-    pub fn adopt(&mut self, run: Phase2Run) -> Option<TrialRun> {
-        let bits =
-            |a: &[f64], b: &[f64]| a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits());
-        if self.model.has_plastic_blocks() || run.failure.continued || !bits(&run.failure.u_elastic, &self.elastic.u) {
-            return None;
-        }
-        let since: Vec<f64> = run.state.u.iter().zip(&self.elastic.u).map(|(a, b)| a - b).collect();
-        let trial = Trial {
-            factor: 1.0,
-            outcome: run.failure.end,
-            foreseen: run.failure.report.stop == Stop::Foreseen,
-            steps: run.failure.report.steps,
-            max_displacement: max_displacement(&since),
-            failed_springs: failed_springs(&run.state.springs.status).total(),
-            yielded_volume: 0.0,
-            yielded_tension_volume: 0.0,
-            started_from: None,
-            setup_s: 0.0,
-            wall_s: 0.0,
-            from_run: true,
-        };
-        if trial.stable() && self.stable.as_ref().is_none_or(|(f, _)| *f < 1.0) {
-            self.stable = Some((1.0, run.state.clone()));
-        }
-        Some(TrialRun { trial, since, cells: None })
+        TrialRun { trial, since, cells }
     }
 
     /// The step budget of one trial.

@@ -190,9 +190,10 @@ pub const ENSEMBLE_PERF_IDS: [&str; 3] =
 
 /// Ensembles of the slip-surface slope ([`crate::harness::perf::ensemble`]):
 /// members per hour without and with strength reduction, against the
-/// goal of 600 with SRM (issue 28; issue 14 asked 100), and the speed-up of two concurrent shards
-/// over one process. Merged shards that are not byte-identical to the one
-/// process's `members.jsonl` carry a defect, as SRM members without an FS do.
+/// goal of 600 with SRM (issue 28; issue 14 asked 100), and the speed-up of
+/// two concurrent shards over one process. Merged shards that are not
+/// byte-identical to the one process's `members.jsonl` carry a defect, as
+/// SRM members without an FS do.
 pub fn ensemble_perf_rows(f: &EnsembleFigures) -> Vec<Check> {
     let [members, srm, shards] = ENSEMBLE_PERF_IDS;
     let goal = reg::GOAL_SRM_MEMBERS_PER_HOUR;
