@@ -26,6 +26,7 @@
 //! Box 8.5 with the tension planes added. The principal directions are
 //! kept (isotropy), and the stress is rebuilt from them.
 
+use crate::mesh::shape::MAX_TETS;
 use nalgebra::Matrix3;
 #[cfg(test)]
 use nalgebra::SymmetricEigen;
@@ -233,7 +234,16 @@ impl MohrCoulomb {
         if self.surely_elastic(&trial) {
             return (trial, Yield::Elastic);
         }
-        let values = principal_values(&trial);
+        self.return_map_with(lame, trial, principal_values(&trial))
+    }
+
+    /// [`Self::return_map`] given the trial's principal values `values`
+    /// (from [`principal_values_of`], as a cell's pass computes them for all
+    /// its tetrahedra at once): the same stress and flag, bit for bit.
+    pub fn return_map_with(&self, lame: Lame, trial: [f64; 6], values: [f64; 3]) -> ([f64; 6], Yield) {
+        if self.surely_elastic(&trial) {
+            return (trial, Yield::Elastic);
+        }
         // The cut-off is infinite without one (phi = 0 and no `tensile`): it
         // does not set the scale, or every trial would pass as elastic.
         let cut = if self.tensile.is_finite() { self.tensile.abs() } else { 0.0 };
@@ -353,7 +363,10 @@ fn principal_elasticity(lame: Lame) -> Matrix3<f64> {
 }
 
 /// Principal stresses ordered `s1 >= s2 >= s3`, in closed form (the
-/// trigonometric solution of the characteristic cubic, Smith 1961).
+/// trigonometric solution of the characteristic cubic, Smith 1961), without
+/// the trigonometry: the largest root `c = cos(acos(r) / 3)` of
+/// `4 c^3 - 3 c = r` is [`cos_third_acos`].
+#[inline(always)]
 fn principal_values(sigma: &[f64; 6]) -> [f64; 3] {
     let [xx, yy, zz, yz, xz, xy] = *sigma;
     let q = (xx + yy + zz) / 3.0;
@@ -368,11 +381,97 @@ fn principal_values(sigma: &[f64; 6]) -> [f64; 3] {
     let det = a * (b * c - yz * yz) - xy * (xy * c - yz * xz) + xz * (xy * yz - b * xz);
     let r = (det / (2.0 * p * p * p)).clamp(-1.0, 1.0);
     // cos(a + 2 pi / 3) = -cos(a) / 2 - sin(a) sqrt(3) / 2, a in [0, pi / 3].
-    let c = (r.acos() / 3.0).cos();
+    let c = cos_third_acos(r);
     let s = (1.0 - c * c).max(0.0).sqrt();
     let s1 = q + 2.0 * p * c;
     let s3 = q - p * (c + 3f64.sqrt() * s);
     [s1, 3.0 * q - s1 - s3, s3]
+}
+
+/// [`principal_values`] of every stress of `sigma` into `out` (at most
+/// [`MAX_TETS`]), the same values bit for bit, branch-free over the
+/// stresses on their components gathered first, so that the compiler
+/// vectorizes it.
+pub fn principal_values_of(sigma: &[[f64; 6]], out: &mut [[f64; 3]]) {
+    const N: usize = MAX_TETS;
+    let n = sigma.len().min(out.len()).min(N);
+    let mut comp = [[0.0; N]; 6];
+    for (t, s) in sigma[..n].iter().enumerate() {
+        for i in 0..6 {
+            comp[i][t] = s[i];
+        }
+    }
+    let mut values = [[0.0; N]; 3];
+    for t in 0..n {
+        let v = principal_values_lane([comp[0][t], comp[1][t], comp[2][t], comp[3][t], comp[4][t], comp[5][t]]);
+        for i in 0..3 {
+            values[i][t] = v[i];
+        }
+    }
+    for (t, o) in out[..n].iter_mut().enumerate() {
+        *o = [values[0][t], values[1][t], values[2][t]];
+    }
+}
+
+/// [`principal_values`] without its branch: the isotropic case (`p2 <= 0`)
+/// selected at the end, its lanes' other values discarded.
+#[inline(always)]
+fn principal_values_lane(sigma: [f64; 6]) -> [f64; 3] {
+    let [xx, yy, zz, yz, xz, xy] = sigma;
+    let q = (xx + yy + zz) / 3.0;
+    let p1 = yz * yz + xz * xz + xy * xy;
+    let (a, b, c) = (xx - q, yy - q, zz - q);
+    let p2 = a * a + b * b + c * c + 2.0 * p1;
+    let p = (p2 / 6.0).sqrt();
+    let det = a * (b * c - yz * yz) - xy * (xy * c - yz * xz) + xz * (xy * yz - b * xz);
+    let r = (det / (2.0 * p * p * p)).clamp(-1.0, 1.0);
+    let c = cos_third_acos(r);
+    let s = (1.0 - c * c).max(0.0).sqrt();
+    let s1 = q + 2.0 * p * c;
+    let s3 = q - p * (c + 3f64.sqrt() * s);
+    let s2 = 3.0 * q - s1 - s3;
+    let round = p2 > 0.0;
+    [if round { s1 } else { q }, if round { s2 } else { q }, if round { s3 } else { q }]
+}
+
+/// `cos(acos(r) / 3)` for `r` in `[-1, 1]`: with `x = sqrt((1 + r) / 2)`
+/// (`r = cos(3 a)` gives `x = cos(3 a / 2)`) it is `cos(2 acos(x) / 3)`,
+/// analytic on `[0, 1]` (even in `acos(x)` at `x = 1`), here its degree-17
+/// Chebyshev interpolant in `t = 2 x - 1`: within 2.3e-16 of 50-digit
+/// values (scripts/cos_third_acos.py computes the coefficients and that
+/// error), within 4.5e-16 of libm's `(r.acos() / 3.0).cos()` (a test). It
+/// replaces that libm pair, a fifth of a yielding tetrahedron's cost, and
+/// unlike it vectorizes ([`principal_values_of`]; references/performance.md,
+/// "2026-12-05 (sixth)").
+#[inline(always)]
+fn cos_third_acos(r: f64) -> f64 {
+    const C: [f64; 18] = [
+        0.7660444431189779,
+        0.2474090663228531,
+        -0.015509188436466925,
+        0.0024663528150807865,
+        -0.0005041246916471823,
+        0.00011642545310520361,
+        -2.8919931061417995e-05,
+        7.541076906895577e-06,
+        -2.0358967113961453e-06,
+        5.6415984269464e-07,
+        -1.5946504043853947e-07,
+        4.583483187568922e-08,
+        -1.348180209578561e-08,
+        3.972853735371566e-09,
+        -1.0526658241086324e-09,
+        3.1461757039177313e-10,
+        -1.6358250988858183e-10,
+        4.9908110575962183e-11,
+    ];
+    let x = (0.5 * (1.0 + r)).max(0.0).sqrt();
+    let t = 2.0 * x - 1.0;
+    let mut h = C[17];
+    for k in (0..17).rev() {
+        h = h * t + C[k];
+    }
+    h
 }
 
 /// The stress whose principal values are `new` on the principal directions
@@ -561,6 +660,55 @@ mod tests {
             let b = principal(&s).0;
             for i in 0..3 {
                 assert!((a[i] - b[i]).abs() <= 1e-9 * (1.0 + b[i].abs()), "{a:?} vs {b:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_polynomial_is_libm_s_cos_of_a_third_of_acos() {
+        // Two ulps at 1; libm's pair carries about one of them.
+        let mut points: Vec<f64> = (0..=200_000).map(|i| -1.0 + i as f64 / 100_000.0).collect();
+        points.extend([-1.0, 1.0, 0.0, 0.5, -0.5, f64::EPSILON - 1.0, 1.0 - f64::EPSILON]);
+        let mut next = uniform(7);
+        points.extend((0..100_000).map(|_| next()));
+        for r in points {
+            let (got, want) = (cos_third_acos(r), (r.acos() / 3.0).cos());
+            assert!((got - want).abs() <= 4.5e-16, "r = {r:e}: {got:e} against {want:e}");
+        }
+        assert!(cos_third_acos(1.0) <= 1.0 + f64::EPSILON && cos_third_acos(-1.0) >= 0.5 - f64::EPSILON);
+    }
+
+    #[test]
+    fn a_cell_s_principal_values_are_each_stress_s_bit_for_bit() {
+        let mut next = uniform(11);
+        for n in [1, 3, 14, 23, MAX_TETS] {
+            let mut sigma: Vec<[f64; 6]> = (0..n).map(|_| [(); 6].map(|_| 1e6 * next())).collect();
+            // Isotropic, zero, uniaxial and a double root among them.
+            let special = [
+                [2e5; 6].map(|x| x * 0.0),
+                [3e5, 3e5, 3e5, 0.0, 0.0, 0.0],
+                [-1e6, 0.0, 0.0, 0.0, 0.0, 0.0],
+                [1.0, 1.0, 2.0, 0.0, 0.0, 0.0],
+            ];
+            for (s, x) in sigma.iter_mut().zip(special) {
+                *s = x;
+            }
+            let mut out = vec![[f64::NAN; 3]; n];
+            principal_values_of(&sigma, &mut out);
+            for (s, v) in sigma.iter().zip(&out) {
+                let want = principal_values(s);
+                assert_eq!(v.map(f64::to_bits), want.map(f64::to_bits), "{s:?}: {v:?} against {want:?}");
+                // The closed form splits a double root by about sqrt(eps)
+                // = 1.5e-8 of the scale (the uniaxial stress: 4e-3 Pa in
+                // 1e6 Pa, the same bits with libm's acos and cos), so the
+                // eigensolver is matched to 2e-8 of the scale.
+                let exact = principal(s).0;
+                for i in 0..3 {
+                    assert!(
+                        (v[i] - exact[i]).abs() <= 2e-8 * (1.0 + exact[0].abs().max(exact[2].abs())),
+                        "{v:?} against {exact:?}"
+                    );
+                }
             }
         }
     }

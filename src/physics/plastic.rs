@@ -36,7 +36,7 @@
 //! mapping each step, `eps_t^p += D^-1 (sigma_trial - sigma_t)`.
 
 use super::elasticity::Lame;
-use super::mohr_coulomb::{compliance, six, MohrCoulomb, RockStrength, Yield};
+use super::mohr_coulomb::{compliance, principal_values_of, six, MohrCoulomb, RockStrength, Yield};
 use super::tet_operator::{corner_forces, point_displacements, scaled_gradients, TetTopology};
 use crate::mesh::shape::{CellKind, MAX_POINTS};
 
@@ -288,14 +288,27 @@ pub fn plastic_element_force(
     let mut f = [[0.0; 3]; MAX_POINTS];
     let (mut pressure, mut volume) = (0.0, 0.0); // sum_t V_t p_t, sum_t V_t
     let mut dev = [0.0; 6]; // sum_t V_t dev(sigma_t)
-    for (((t, op), eps), h) in topo.tets.iter().zip(tets).zip(&eps).zip(hist.iter_mut()) {
+                            // The trial stresses first, then the principal values of their
+                            // effective parts (the pore pressure added) all at once (vectorized),
+                            // then the returns.
+    let n = tets.len();
+    let mut trials = [[0.0; 6]; MAX_TETS];
+    for ((eps, h), trial) in eps[..n].iter().zip(hist.iter()).zip(trials.iter_mut()) {
         let strain = shifted(mixed(*eps, e), shift);
-        let elastic = six(|i| strain[i] - h.eps_p[i]);
-        let trial = lame.stress_voigt(elastic);
+        *trial = lame.stress_voigt(six(|i| strain[i] - h.eps_p[i]));
+    }
+    let mut effective = trials;
+    if pore != 0.0 {
+        effective[..n].iter_mut().for_each(|t| *t = shift_normal(*t, pore));
+    }
+    let mut values = [[0.0; 3]; MAX_TETS];
+    principal_values_of(&effective[..n], &mut values[..n]);
+    let each = topo.tets.iter().zip(tets).zip(hist.iter_mut()).zip(trials.iter().zip(&effective).zip(&values));
+    for (((t, op), h), ((&trial, &eff), &v)) in each {
         let (sigma, now) = match pore {
-            0.0 => surface.return_map(lame, trial),
+            0.0 => surface.return_map_with(lame, trial, v),
             _ => {
-                let (s, now) = surface.return_map(lame, shift_normal(trial, pore));
+                let (s, now) = surface.return_map_with(lame, eff, v);
                 (shift_normal(s, -pore), now)
             }
         };
