@@ -135,7 +135,7 @@ enum Command {
         #[arg(long)]
         regenerate: bool,
         /// Also the five heavy published slopes of the plastic rock mass on
-        /// hexahedra, prisms and tetrahedra (about an hour more on 2 cores;
+        /// hexahedra, prisms and tetrahedra (about 40 minutes more on 2 cores;
         /// without it their rows are skipped). Alone: all five; or some of
         /// them by key, comma-separated.
         #[arg(long, num_args = 0.., value_delimiter = ',', value_parser = published_slope_keys())]
