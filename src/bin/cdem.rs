@@ -90,7 +90,7 @@ enum Command {
     /// and `cdem srm` on the slip-surface slope, ensembles of it, the damping table, cost
     /// against size (gmsh for refine 7, 10) and phase 2 and `cdem srm` against size (gmsh):
     /// DIR/perf.md (with the validation rows perf/*) and CSVs. Run from the repository root;
-    /// about 70 to 110 minutes with the defaults (the plastic strength reductions about 10 of them,
+    /// about 70 to 110 minutes with the defaults (the plastic strength reductions about 8 of them,
     /// phase 2 and `cdem srm` against size 30 to 50: its finest slab alone took 43 minutes on
     /// 2026-12-05, on a loaded machine).
     Perf {
@@ -108,7 +108,7 @@ enum Command {
         #[arg(long)]
         no_damping: bool,
         /// Skip the timed strength reductions: the slip-surface slope, brittle and ductile (about 12 s and 28 s), and
-        /// the plastic blocks of Griffiths & Lane and the paper slope with and without the foresight rule (about 12
+        /// the plastic blocks of Griffiths & Lane and the paper slope with and without the foresight rule (about 8
         /// min, references/performance.md); phase 2 to a decision (node-block against lumped masses, a few seconds)
         /// always runs.
         #[arg(long)]
