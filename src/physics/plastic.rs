@@ -288,9 +288,10 @@ pub fn plastic_element_force(
     let mut f = [[0.0; 3]; MAX_POINTS];
     let (mut pressure, mut volume) = (0.0, 0.0); // sum_t V_t p_t, sum_t V_t
     let mut dev = [0.0; 6]; // sum_t V_t dev(sigma_t)
-                            // The trial stresses first, then the principal values of their
-                            // effective parts (the pore pressure added) all at once (vectorized),
-                            // then the returns.
+
+    // The trial stresses first, then the principal values of their effective
+    // parts (the pore pressure added) all at once (vectorized), then the
+    // returns.
     let n = tets.len();
     let mut trials = [[0.0; 6]; MAX_TETS];
     for ((eps, h), trial) in eps[..n].iter().zip(hist.iter()).zip(trials.iter_mut()) {
