@@ -234,7 +234,7 @@ impl MohrCoulomb {
         if self.surely_elastic(&trial) {
             return (trial, Yield::Elastic);
         }
-        self.return_map_with(lame, trial, principal_values(&trial))
+        self.return_from(lame, trial, principal_values(&trial))
     }
 
     /// [`Self::return_map`] given the trial's principal values `values`
@@ -244,6 +244,12 @@ impl MohrCoulomb {
         if self.surely_elastic(&trial) {
             return (trial, Yield::Elastic);
         }
+        self.return_from(lame, trial, values)
+    }
+
+    /// The return mapping past the invariant filter, from the trial's
+    /// principal values `values`.
+    fn return_from(&self, lame: Lame, trial: [f64; 6], values: [f64; 3]) -> ([f64; 6], Yield) {
         // The cut-off is infinite without one (phi = 0 and no `tensile`): it
         // does not set the scale, or every trial would pass as elastic.
         let cut = if self.tensile.is_finite() { self.tensile.abs() } else { 0.0 };
@@ -365,7 +371,9 @@ fn principal_elasticity(lame: Lame) -> Matrix3<f64> {
 /// Principal stresses ordered `s1 >= s2 >= s3`, in closed form (the
 /// trigonometric solution of the characteristic cubic, Smith 1961), without
 /// the trigonometry: the largest root `c = cos(acos(r) / 3)` of
-/// `4 c^3 - 3 c = r` is [`cos_third_acos`].
+/// `4 c^3 - 3 c = r` is [`cos_third_acos`]. Branch-free, so that
+/// [`principal_values_of`] vectorizes it: an isotropic stress (`p2 = 0`)
+/// takes `q` thrice at the end, its other values discarded.
 #[inline(always)]
 fn principal_values(sigma: &[f64; 6]) -> [f64; 3] {
     let [xx, yy, zz, yz, xz, xy] = *sigma;
@@ -373,9 +381,6 @@ fn principal_values(sigma: &[f64; 6]) -> [f64; 3] {
     let p1 = yz * yz + xz * xz + xy * xy;
     let (a, b, c) = (xx - q, yy - q, zz - q);
     let p2 = a * a + b * b + c * c + 2.0 * p1;
-    if p2 <= 0.0 {
-        return [q; 3];
-    }
     let p = (p2 / 6.0).sqrt();
     // det((A - q I) / p) / 2.
     let det = a * (b * c - yz * yz) - xy * (xy * c - yz * xz) + xz * (xy * yz - b * xz);
@@ -385,13 +390,14 @@ fn principal_values(sigma: &[f64; 6]) -> [f64; 3] {
     let s = (1.0 - c * c).max(0.0).sqrt();
     let s1 = q + 2.0 * p * c;
     let s3 = q - p * (c + 3f64.sqrt() * s);
-    [s1, 3.0 * q - s1 - s3, s3]
+    let s2 = 3.0 * q - s1 - s3;
+    let round = p2 > 0.0;
+    [if round { s1 } else { q }, if round { s2 } else { q }, if round { s3 } else { q }]
 }
 
 /// [`principal_values`] of every stress of `sigma` into `out` (at most
-/// [`MAX_TETS`]), the same values bit for bit, branch-free over the
-/// stresses on their components gathered first, so that the compiler
-/// vectorizes it.
+/// [`MAX_TETS`]), on their components gathered first, so that the compiler
+/// vectorizes the loop over the stresses.
 pub fn principal_values_of(sigma: &[[f64; 6]], out: &mut [[f64; 3]]) {
     const N: usize = MAX_TETS;
     let n = sigma.len().min(out.len()).min(N);
@@ -403,7 +409,7 @@ pub fn principal_values_of(sigma: &[[f64; 6]], out: &mut [[f64; 3]]) {
     }
     let mut values = [[0.0; N]; 3];
     for t in 0..n {
-        let v = principal_values_lane([comp[0][t], comp[1][t], comp[2][t], comp[3][t], comp[4][t], comp[5][t]]);
+        let v = principal_values(&[comp[0][t], comp[1][t], comp[2][t], comp[3][t], comp[4][t], comp[5][t]]);
         for i in 0..3 {
             values[i][t] = v[i];
         }
@@ -411,27 +417,6 @@ pub fn principal_values_of(sigma: &[[f64; 6]], out: &mut [[f64; 3]]) {
     for (t, o) in out[..n].iter_mut().enumerate() {
         *o = [values[0][t], values[1][t], values[2][t]];
     }
-}
-
-/// [`principal_values`] without its branch: the isotropic case (`p2 <= 0`)
-/// selected at the end, its lanes' other values discarded.
-#[inline(always)]
-fn principal_values_lane(sigma: [f64; 6]) -> [f64; 3] {
-    let [xx, yy, zz, yz, xz, xy] = sigma;
-    let q = (xx + yy + zz) / 3.0;
-    let p1 = yz * yz + xz * xz + xy * xy;
-    let (a, b, c) = (xx - q, yy - q, zz - q);
-    let p2 = a * a + b * b + c * c + 2.0 * p1;
-    let p = (p2 / 6.0).sqrt();
-    let det = a * (b * c - yz * yz) - xy * (xy * c - yz * xz) + xz * (xy * yz - b * xz);
-    let r = (det / (2.0 * p * p * p)).clamp(-1.0, 1.0);
-    let c = cos_third_acos(r);
-    let s = (1.0 - c * c).max(0.0).sqrt();
-    let s1 = q + 2.0 * p * c;
-    let s3 = q - p * (c + 3f64.sqrt() * s);
-    let s2 = 3.0 * q - s1 - s3;
-    let round = p2 > 0.0;
-    [if round { s1 } else { q }, if round { s2 } else { q }, if round { s3 } else { q }]
 }
 
 /// `cos(acos(r) / 3)` for `r` in `[-1, 1]`: with `x = sqrt((1 + r) / 2)`

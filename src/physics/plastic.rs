@@ -51,7 +51,7 @@ use crate::mesh::shape::{CellKind, MAX_POINTS};
 pub const NODE_SMOOTHING: f64 = 0.6;
 
 /// Most sub-tetrahedra of a cell (a hexahedron's 24).
-pub const MAX_TETS: usize = 24;
+pub use crate::mesh::shape::MAX_TETS;
 
 /// The history of one tetrahedron.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
