@@ -78,6 +78,7 @@ fn sliding_is_checked_on_its_cadence_and_after_the_tolerance() {
         floor: 0.0,
         displacement: 0.5,
         travel: 0.0,
+        steady: false,
     };
     let r = relax(
         &mut solver,
@@ -121,6 +122,7 @@ fn relax_with_travel(solver: &mut Solver, model: &Model, state: &mut State, tol:
         floor: 0.0,
         displacement: f64::INFINITY,
         travel,
+        steady: false,
     };
     relax(solver, model, state, &StopRules { sliding: Some(rule), ..rules(tol, 100_000) }, &mut unobserved).unwrap()
 }

@@ -105,6 +105,7 @@ pub fn sliding_rule<'a>(model: &'a Model, u_elastic: &'a [f64], params: &Failure
             (None, true) => PLASTIC_SLIDING_TRAVEL * (hi[2] - lo[2]).max(0.0),
             (None, false) => 0.0,
         },
+        steady: model.has_plastic_blocks(),
     };
     let zero = vec![0.0; u_elastic.len()];
     rule.floor = SLIDING_FLOOR * Sliding { reference: &zero, ..rule }.mean_displacement(u_elastic);

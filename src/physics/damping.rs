@@ -4,7 +4,11 @@
 //!   component, independent of the frequency;
 //! - viscous, mass proportional: `f_d = c m v`, with `c = 2 omega` where
 //!   `omega^2 = (u . K u) / (u . M u)` is the Rayleigh quotient of the current
-//!   displacement (adaptive, Underwood 1983);
+//!   displacement (adaptive, Underwood 1983); with plastic blocks in the
+//!   failure phase, `omega^2 = (du . df) / (du . M du)` of the last step's
+//!   increment instead ([`tangent_numerator`]): the tangent stiffness along
+//!   the motion, which softens as a trial nears its critical factor while
+//!   the secant `u . K u` stays near the elastic one;
 //! - kinetic: no force; velocities are zeroed at each peak of kinetic energy;
 //! - spring dashpots (failure phase with plastic blocks or every mesh face
 //!   breakable, on top of the viscous damping): `f_d = beta K_spring
@@ -38,6 +42,22 @@ pub fn rayleigh_omega2(u: &[f64], f_int: &[f64], mass: &[f64]) -> f64 {
         }
     }
     rayleigh_omega2_with(num, den)
+}
+
+/// The tangent Rayleigh quotient's numerator `du . df` of one step, from
+/// the displacements and internal forces after it (`u`, `f`) and before it
+/// (`u0`, `f0`); also writes `du = u - u0` (for `du . M du`). Its quotient
+/// by `du . M du` ([`rayleigh_omega2_with`]) is the square of the lowest
+/// frequency of the tangent operator once the motion has settled into the
+/// slowest mode: Underwood's local-stiffness estimate (1983), taken along
+/// the increment rather than per component.
+pub fn tangent_numerator(u: &[f64], f: &[f64], u0: &[f64], f0: &[f64], du: &mut [f64]) -> f64 {
+    let mut num = 0.0;
+    for ((((d, u), f), u0), f0) in du.iter_mut().zip(u).zip(f).zip(u0).zip(f0) {
+        *d = u - u0;
+        num += *d * (f - f0);
+    }
+    num
 }
 
 /// The Rayleigh quotient `(u . K u) / (u . M u)` from its two parts (0 if
@@ -86,7 +106,24 @@ pub fn spring_dashpot(beta: f64, kn: f64, ks: f64, n: [f64; 3], w: [f64; 3]) -> 
 
 #[cfg(test)]
 mod tests {
-    use super::{dashpot_beta, spring_dashpot};
+    use super::{dashpot_beta, rayleigh_omega2, rayleigh_omega2_with, spring_dashpot, tangent_numerator};
+
+    #[test]
+    fn the_tangent_quotient_sees_a_softened_mode_that_the_secant_does_not() {
+        // One node of unit mass on a softening spring, f = k u - a u^3 per
+        // component, moved a little further along (1, 1, 1) near u = 0.5.
+        let (k, a) = (4.0, 5.0);
+        let f = |u: &[f64]| -> Vec<f64> { u.iter().map(|&x| k * x - a * x * x * x).collect() };
+        let (u0, u) = (vec![0.5; 3], vec![0.5 + 1e-6; 3]);
+        let mut du = vec![0.0; 3];
+        let num = tangent_numerator(&u, &f(&u), &u0, &f(&u0), &mut du);
+        let tangent = rayleigh_omega2_with(num, du.iter().map(|d| d * d).sum());
+        let secant = rayleigh_omega2(&u, &f(&u), &[1.0]);
+        // k - 3 a u^2 = 0.25 against the secant's k - a u^2 = 2.75.
+        assert!((tangent - 0.25).abs() < 1e-4, "{tangent}");
+        assert!((secant - 2.75).abs() < 1e-4, "{secant}");
+        assert_eq!(du, vec![1e-6 + 0.5 - 0.5; 3]);
+    }
 
     /// The largest root modulus of `z^2 + (W (1 + b) - 2) z + (1 - b W) = 0`,
     /// `W = Omega^2`: one mode of central differences with a

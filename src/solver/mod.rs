@@ -36,7 +36,7 @@ use serde::Serialize;
 use crate::error::SolveError;
 use crate::model::Model;
 use crate::model::ELEMENT_SLOT;
-use crate::physics::damping::{dashpot_beta, rayleigh_omega2, rayleigh_omega2_with};
+use crate::physics::damping::{dashpot_beta, rayleigh_omega2, rayleigh_omega2_with, tangent_numerator};
 use crate::physics::joint::{CoulombJoint, JointState};
 use crate::physics::plastic::RockState;
 use crate::physics::spring::SpringState;
@@ -127,6 +127,18 @@ pub struct Solver {
     /// per component (empty until the dashpots are on).
     f_dash_spring: Vec<[f64; 3]>,
     f_dash: Vec<f64>,
+    /// Scratch of the tangent damping estimate (plastic failure phase).
+    tangent: TangentProbe,
+}
+
+/// The state one step before a refresh of the tangent damping estimate:
+/// `u` and `f_int` then, and the increment's scratch.
+#[derive(Default)]
+struct TangentProbe {
+    u: Vec<f64>,
+    f: Vec<f64>,
+    du: Vec<f64>,
+    armed: bool,
 }
 
 impl Solver {
@@ -164,6 +176,7 @@ impl Solver {
             dashpot_beta: 0.0,
             f_dash_spring: Vec::new(),
             f_dash: Vec::new(),
+            tangent: TangentProbe::default(),
         })
     }
 
@@ -201,6 +214,7 @@ impl Solver {
     pub fn restart(&mut self) {
         self.viscous_c = 0.0;
         self.last_kinetic = 0.0;
+        self.tangent.armed = false;
     }
 
     pub fn inertia(&self) -> &Inertia {
@@ -294,10 +308,43 @@ impl Solver {
         true
     }
 
-    /// Adaptive viscous damping: `c = 2 omega` from the Rayleigh quotient,
-    /// refreshed every 10 steps.
+    /// Adaptive viscous damping: `c = 2 omega`, refreshed every 10 steps.
+    /// `omega^2` is the Rayleigh quotient of the displacement (the secant),
+    /// or with plastic blocks in the failure phase that of the increment of
+    /// the step before the refresh (the tangent along the motion: a trial near
+    /// its critical factor has a soft slowest mode, which the secant's
+    /// `c` overdamps; docs/method.md 2.9b). A tangent that is not positive
+    /// (softening) keeps the last `c`; the secant starts it.
     fn update_damping(&mut self, state: &State) {
-        if self.params.damping == DampingKind::Viscous && state.step.is_multiple_of(10) {
+        if self.params.damping != DampingKind::Viscous {
+            return;
+        }
+        if self.plastic {
+            if state.step % 10 == 9 {
+                let t = &mut self.tangent;
+                t.u.clone_from(&state.u);
+                t.f.clone_from(&state.f_int);
+                t.armed = true;
+                return;
+            }
+            if state.step.is_multiple_of(10) && self.tangent.armed {
+                let t = &mut self.tangent;
+                t.armed = false;
+                t.du.resize(state.u.len(), 0.0);
+                let num = tangent_numerator(&state.u, &state.f_int, &t.u, &t.f, &mut t.du);
+                let w2 = match self.inertia.is_block() {
+                    true => rayleigh_omega2_with(num, self.inertia.quadratic(&t.du)),
+                    false => rayleigh_omega2_with(num, quadratic_lumped(&t.du, self.inertia.lumped_masses())),
+                };
+                if w2 > 0.0 {
+                    self.viscous_c = 2.0 * w2.sqrt();
+                }
+                if self.viscous_c > 0.0 {
+                    return;
+                }
+            }
+        }
+        if state.step.is_multiple_of(10) {
             let w2 = match self.inertia.is_block() {
                 true => rayleigh_omega2_with(dot(&state.u, &state.f_int), self.inertia.quadratic(&state.u)),
                 false => rayleigh_omega2(&state.u, &state.f_int, self.inertia.lumped_masses()),
@@ -413,6 +460,11 @@ pub fn unbalanced_ratio(max_unbalanced: f64, f_ext_max: f64) -> f64 {
     } else {
         f64::INFINITY
     }
+}
+
+/// `x . M x` with lumped masses (one per node, three components).
+fn quadratic_lumped(x: &[f64], mass: &[f64]) -> f64 {
+    x.chunks_exact(3).zip(mass).map(|(x, m)| m * (x[0] * x[0] + x[1] * x[1] + x[2] * x[2])).sum()
 }
 
 fn dot(a: &[f64], b: &[f64]) -> f64 {

@@ -12,8 +12,10 @@
 //!    `window` steps ([`Stop::Sliding`]): the mass-weighted mean displacement
 //!    since `reference` grew in each of the last `windows` windows by more
 //!    than `floor` and by at least as much as in the window before (the
-//!    displacement rate does not decay: a mass keeps moving), or the largest
-//!    displacement since `reference` passed `displacement`;
+//!    displacement rate does not decay: a mass keeps moving), or (`steady`)
+//!    the last `windows` increments sum to at least the `windows` before (a
+//!    steady creep whose increments scatter from window to window), or the
+//!    largest displacement since `reference` passed `displacement`;
 //! 3. **budget**: `max_steps` steps taken ([`Stop::Budget`]);
 //! 4. **foresight** (if given; strength-reduction trials), checked at the
 //!    end of every sliding window ([`Stop::Foreseen`]): the ratio has
@@ -125,14 +127,37 @@ pub struct Sliding<'a> {
     /// `reference` has reached this (m; 0: at once): a trial is not called
     /// sliding while its mass has moved only millimetres.
     pub travel: f64,
+    /// Also sliding (past `travel`) when the increments of the last
+    /// `windows` windows sum to at least those of the `windows` before and
+    /// to more than `windows` floors: the rate has not decayed over
+    /// `2 windows` windows. A plastic mechanism creeps at a steady rate whose
+    /// increments scatter by a few per cent, so three rising windows in a
+    /// row are a matter of chance there (references/plastic.md).
+    pub steady: bool,
 }
 
 /// The running state of the sliding rule.
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Debug, Clone, Default)]
 struct SlidingWatch {
     last_mean: f64,
     last_increment: f64,
     rising: usize,
+    /// The increments of the last `2 windows` windows (oldest first).
+    increments: Vec<f64>,
+}
+
+impl SlidingWatch {
+    /// The rate over the last `k` windows has not decayed against the `k`
+    /// before, and is above `k` floors.
+    fn steady(&self, k: usize, floor: f64) -> bool {
+        let n = self.increments.len();
+        if k == 0 || n < 2 * k {
+            return false;
+        }
+        let recent: f64 = self.increments[n - k..].iter().sum();
+        let before: f64 = self.increments[n - 2 * k..n - k].iter().sum();
+        recent > k as f64 * floor && recent >= before
+    }
 }
 
 impl Sliding<'_> {
@@ -165,7 +190,14 @@ impl Sliding<'_> {
             if !first && increment > self.floor && increment >= watch.last_increment { watch.rising + 1 } else { 0 };
         watch.last_mean = mean;
         watch.last_increment = increment;
-        watch.rising >= self.windows && (self.travel <= 0.0 || max_displacement_since(u, self.reference) >= self.travel)
+        if !first && self.steady && self.windows > 0 {
+            if watch.increments.len() == 2 * self.windows {
+                watch.increments.remove(0);
+            }
+            watch.increments.push(increment);
+        }
+        let moving = watch.rising >= self.windows || (self.steady && watch.steady(self.windows, self.floor));
+        moving && (self.travel <= 0.0 || max_displacement_since(u, self.reference) >= self.travel)
     }
 }
 
@@ -304,7 +336,23 @@ pub fn relax(
 
 #[cfg(test)]
 mod tests {
-    use super::{at_rest, Foresight};
+    use super::{at_rest, Foresight, SlidingWatch};
+
+    #[test]
+    fn a_steady_rate_with_scatter_slides_and_a_decaying_one_does_not() {
+        let watch = |increments: &[f64]| SlidingWatch { increments: increments.to_vec(), ..Default::default() };
+        // The paper slope's F = 1.125 with the tangent damping: 2.3-2.6 mm per
+        // window, never three rising windows in a row.
+        let creep = [2.4e-3, 2.3e-3, 2.6e-3, 2.4e-3, 2.3e-3, 2.6e-3];
+        assert!(watch(&creep).steady(3, 1e-5));
+        // A relaxing state: its increments shrink (q = 0.9 per window).
+        let relaxing: Vec<f64> = (0..6).map(|k| 1e-3 * 0.9f64.powi(k)).collect();
+        assert!(!watch(&relaxing).steady(3, 1e-5));
+        // Below the floor, too few windows, or no windows: rest.
+        assert!(!watch(&creep).steady(3, 3e-3));
+        assert!(!watch(&creep[1..]).steady(3, 1e-5));
+        assert!(!watch(&creep).steady(0, 1e-5));
+    }
 
     #[test]
     fn foresight_extrapolates_a_geometric_decay() {
