@@ -136,7 +136,12 @@ impl MohrCoulomb {
     /// principal value moves more than that norm) and the cut-off's by at
     /// most once: `sigma + ds` is inside while `2 |ds| < margin`.
     pub fn margin(&self, sigma: &[f64; 6]) -> f64 {
-        let s = principal_values(sigma);
+        self.margin_of(principal_values(sigma))
+    }
+
+    /// [`Self::margin`] from the principal values `s` (descending), for a
+    /// batch whose values came from [`principal_values_of`].
+    pub fn margin_of(&self, s: [f64; 3]) -> f64 {
         -self.excess(0, s).max(s[0] - self.tensile)
     }
 

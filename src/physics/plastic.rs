@@ -495,11 +495,17 @@ pub fn screen_radius(
     hist: &[TetPlastic],
 ) -> f64 {
     let (eps, e) = tet_strains(topo, tets, &point_displacements(topo, nodes, u));
-    let mut radius = f64::INFINITY;
-    for ((eps, h), &g) in eps[..tets.len()].iter().zip(hist).zip(sensitivity) {
+    let n = tets.len().min(hist.len()).min(sensitivity.len());
+    let mut sigma = [[0.0; 6]; MAX_TETS];
+    for ((s, eps), h) in sigma.iter_mut().zip(&eps[..n]).zip(hist) {
         let strain = mixed(*eps, e);
-        let sigma = lame.stress_voigt(six(|i| strain[i] - h.eps_p[i]));
-        let margin = surface.margin(&shift_normal(sigma, pore));
+        *s = shift_normal(lame.stress_voigt(six(|i| strain[i] - h.eps_p[i])), pore);
+    }
+    let mut values = [[0.0; 3]; MAX_TETS];
+    principal_values_of(&sigma[..n], &mut values[..n]);
+    let mut radius = f64::INFINITY;
+    for (&s, &g) in values[..n].iter().zip(sensitivity) {
+        let margin = surface.margin_of(s);
         if !(margin > 0.0) {
             return 0.0;
         }
