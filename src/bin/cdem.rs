@@ -90,7 +90,7 @@ enum Command {
     /// and `cdem srm` on the slip-surface slope, ensembles of it, the damping table, cost
     /// against size (gmsh for refine 7, 10) and phase 2 and `cdem srm` against size (gmsh):
     /// DIR/perf.md (with the validation rows perf/*) and CSVs. Run from the repository root;
-    /// about 70 to 110 minutes with the defaults (the plastic strength reductions about 8 of them,
+    /// about 70 to 110 minutes with the defaults (the plastic strength reductions about 3 of them,
     /// phase 2 and `cdem srm` against size 30 to 50: its finest slab alone took 43 minutes on
     /// 2026-12-05, on a loaded machine).
     Perf {

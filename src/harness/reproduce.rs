@@ -168,11 +168,11 @@ fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Err
     rep.checks.extend(suite::plastic::column_rows()?.into_iter().map(|r| r.0));
     progress("plastic blocks: Prandtl's strip footing (about 1 min)");
     rep.checks.push(suite::plastic::prandtl_row()?.0);
-    progress("plastic blocks: Griffiths & Lane's slope by strength reduction (about 3 min)");
+    progress("plastic blocks: Griffiths & Lane's slope by strength reduction (about 2 min)");
     let gl1 = suite::plastic::gl1_hex_row()?;
     let (gl1_prism, gl1_tet, gl1_spread) = suite::plastic::gl1_shape_rows(&gl1)?;
     rep.checks.extend([gl1.row, gl1_prism.row, gl1_tet.row, gl1_spread]);
-    progress("plastic blocks: the paper slope with every interface breakable, by strength reduction (about 3 min)");
+    progress("plastic blocks: the paper slope with every interface breakable, by strength reduction (about 1 min)");
     rep.checks.push(suite::plastic::paper_slope_row()?.row);
     joint_sets(rep, progress)?;
     water(rep, progress)?;
