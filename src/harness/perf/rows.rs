@@ -140,6 +140,12 @@ pub fn srm_perf_rows(f: &SrmFigure, e: &SrmFigure) -> Vec<Check> {
     // What `e` is: the same search from the elastic state, or without the
     // foresight rule.
     let other = if e.foresight != f.foresight { "without the foresight rule" } else { "from the elastic state" };
+    // A comparison with the rule off says nothing where the rule ended no
+    // trial: say how many it could have ended.
+    let vacuous = match (e.foresight != f.foresight, f.undecided) {
+        (true, 0) => "; no trial Undecided: the rule fired on none, so the two searches are the same",
+        _ => "",
+    };
     let rows = vec![
         row(&wall).value(f.seconds, srm_goal_seconds(&f.variant), f.seconds).with_note(format!(
             "FS {}; {budget}; {other} in the same run {:.1} s ({:.2}x), {:.0} steps per trial",
@@ -158,7 +164,7 @@ pub fn srm_perf_rows(f: &SrmFigure, e: &SrmFigure) -> Vec<Check> {
             if (f.trial_budget as f64) < cap { "below" } else { "not below" }
         )),
         row(&change).value(fs_change, width, f.seconds + e.seconds).with_note(format!(
-            "FS as cdem srm runs it / {other} {} / {}, bracket [{}, {}] / [{}, {}], {} / {} trials",
+            "FS as cdem srm runs it / {other} {} / {}, bracket [{}, {}] / [{}, {}], {} / {} trials{vacuous}",
             fmt(f.fs),
             fmt(e.fs),
             fmt(f.bracket_lo),
