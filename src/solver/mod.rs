@@ -332,10 +332,7 @@ impl Solver {
                 t.armed = false;
                 t.du.resize(state.u.len(), 0.0);
                 let num = tangent_numerator(&state.u, &state.f_int, &t.u, &t.f, &mut t.du);
-                let w2 = match self.inertia.is_block() {
-                    true => rayleigh_omega2_with(num, self.inertia.quadratic(&t.du)),
-                    false => rayleigh_omega2_with(num, quadratic_lumped(&t.du, self.inertia.lumped_masses())),
-                };
+                let w2 = rayleigh_omega2_with(num, self.inertia.quadratic(&t.du));
                 if w2 > 0.0 {
                     self.viscous_c = 2.0 * w2.sqrt();
                 }
@@ -460,11 +457,6 @@ pub fn unbalanced_ratio(max_unbalanced: f64, f_ext_max: f64) -> f64 {
     } else {
         f64::INFINITY
     }
-}
-
-/// `x . M x` with lumped masses (one per node, three components).
-fn quadratic_lumped(x: &[f64], mass: &[f64]) -> f64 {
-    x.chunks_exact(3).zip(mass).map(|(x, m)| m * (x[0] * x[0] + x[1] * x[1] + x[2] * x[2])).sum()
 }
 
 fn dot(a: &[f64], b: &[f64]) -> f64 {
