@@ -22,6 +22,35 @@ pub fn stream_triad(n: usize, repeats: usize) -> f64 {
     24.0 * n as f64 / best / 1e9
 }
 
+/// The triad's arrays, kept for batches timed between other measurements
+/// ([`Triad::batch`]): `cdem perf` interleaves them with the step's
+/// batches, so that both see the same moments of a shared machine.
+pub struct Triad {
+    a: Vec<f64>,
+    b: Vec<f64>,
+    c: Vec<f64>,
+}
+
+impl Triad {
+    /// Three arrays of `n` f64.
+    pub fn new(n: usize) -> Self {
+        Self { a: vec![0.0; n], b: (0..n).map(|i| i as f64).collect(), c: (0..n).map(|i| (n - i) as f64).collect() }
+    }
+
+    /// `passes` triads on the current rayon pool timed together (GB/s, 24 B
+    /// per iteration as in [`stream_triad`]).
+    pub fn batch(&mut self, passes: usize) -> f64 {
+        let passes = passes.max(1);
+        let t = Instant::now();
+        for _ in 0..passes {
+            triad_par(&mut self.a, &self.b, &self.c, 3.0);
+        }
+        let s = t.elapsed().as_secs_f64();
+        std::hint::black_box(&self.a);
+        24.0 * (self.a.len() * passes) as f64 / s / 1e9
+    }
+}
+
 /// STREAM's triad `a[i] = b[i] + s c[i]`, one thread.
 pub fn triad(a: &mut [f64], b: &[f64], c: &[f64], s: f64) {
     for ((a, b), c) in a.iter_mut().zip(b).zip(c) {

@@ -35,6 +35,18 @@ pub struct StepFigure {
 /// Times `steps` steps in 5 batches after 20 warm-up steps from rest; the
 /// median batch gives the time per step, [`step_bytes`] the bytes.
 pub fn time_steps(model: &Model, params: &SolverParams, steps: usize) -> Result<StepFigure, Error> {
+    time_steps_between(model, params, steps, &mut || {})
+}
+
+/// [`time_steps`] with `between` run before each batch (untimed): `cdem
+/// perf` times a triad batch there, so that the step and the triad are
+/// measured side by side.
+pub fn time_steps_between(
+    model: &Model,
+    params: &SolverParams,
+    steps: usize,
+    between: &mut dyn FnMut(),
+) -> Result<StepFigure, Error> {
     let mut solver = Solver::new(model, params.clone())?;
     let mut state = State::new(model);
     for _ in 0..20 {
@@ -43,14 +55,14 @@ pub fn time_steps(model: &Model, params: &SolverParams, steps: usize) -> Result<
     let per_batch = steps.div_ceil(5).max(1);
     let mut batches = Vec::with_capacity(5);
     for _ in 0..5 {
+        between();
         let t = Instant::now();
         for _ in 0..per_batch {
             solver.step(model, &mut state)?;
         }
         batches.push(t.elapsed().as_secs_f64() / per_batch as f64);
     }
-    batches.sort_by(f64::total_cmp);
-    let step_s = batches[2];
+    let step_s = median(&mut batches);
     let block = params.uses_block_mass();
     let bytes = step_bytes(model, block);
     Ok(StepFigure {
@@ -61,6 +73,12 @@ pub fn time_steps(model: &Model, params: &SolverParams, steps: usize) -> Result<
         bytes_per_step: bytes,
         gbs: bytes / step_s / 1e9,
     })
+}
+
+/// The median of `x` (the middle value; of an even count, the upper one).
+pub fn median(x: &mut [f64]) -> f64 {
+    x.sort_by(f64::total_cmp);
+    x[x.len() / 2]
 }
 
 /// The element pass alone (`forces::element_forces`, eq. 12) on a model.
