@@ -119,6 +119,26 @@ impl Default for PerfOptions {
 /// scaling takes about 274,000 on the paper slope).
 const DAMPING_MAX_STEPS: usize = 400_000;
 
+/// Fails at once, not after the headline's minutes, if the run will need
+/// gmsh and it does not run from PATH: a scaling resolution without a
+/// committed mesh or one already in `meshes`, or the trials against size.
+fn gmsh_preflight(opts: &PerfOptions, meshes: &Path) -> Result<(), Error> {
+    let committed = |r: f64| scaling::SLOPE_MESHES.iter().any(|(c, _)| *c == r);
+    let meshed = |r: f64| meshes.join(format!("slope-r{r}.msh")).is_file();
+    let needs: Vec<String> =
+        opts.refine.iter().filter(|&&r| !committed(r) && !meshed(r)).map(|r| format!("refine {r}")).collect();
+    let trials = opts.trials.then(|| "the trials against size".to_string());
+    let needs: Vec<String> = needs.into_iter().chain(trials).collect();
+    if needs.is_empty() || crate::mesh::gmsh::gmsh_available() {
+        return Ok(());
+    }
+    Err(Error::Gmsh(format!(
+        "gmsh does not run from PATH, and the run needs it ({}): install it (`pip install gmsh==4.15.0`, as \
+         .ci/run does) or leave those out (`--refine 0.5,1,2,4`, `--no-trial-scaling`)",
+        needs.join(", ")
+    )))
+}
+
 /// `cdem perf`: headline figures, phase 2 and strength reduction on the
 /// slip-surface slope, timed ensembles of it, damping table, scaling study
 /// and phase 2 and strength reduction against size ([`trials`], `trials.csv`,
@@ -128,6 +148,7 @@ const DAMPING_MAX_STEPS: usize = 400_000;
 /// processes' output in `out/ensemble`) and returns `perf.md`.
 pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn FnMut(&str)) -> Result<String, Error> {
     std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
+    gmsh_preflight(opts, &out.join("meshes"))?;
     let (scene, model) = paper_slope(root)?;
     let head = headline_with(root, &scene, &model, opts.pyslope.as_deref(), progress)?;
     let failure = failure_figures(root, opts.srm, progress)?;
