@@ -63,7 +63,7 @@ pub use pyslope::{pyslope_grid_search, pyslope_seconds, time_lem_grid, time_pysl
 pub use scaling::{
     exponents, fit_power, scaling_meshes, scaling_study, slope_mesh, Exponents, ScalingRow, SLOPE_MESHES,
 };
-pub use stream::{stream_triad, triad, triad_par};
+pub use stream::{triad, triad_par, Triad};
 pub use tables::{damping_markdown, scaling_markdown, write_report};
 pub use timing::{time_dr, time_fem, time_pcg, time_steps, DrFigure, PcgFigure, StepFigure};
 
@@ -123,12 +123,9 @@ const DAMPING_MAX_STEPS: usize = 400_000;
 /// gmsh and it does not run from PATH: a scaling resolution without a
 /// committed mesh or one already in `meshes`, or the trials against size.
 fn gmsh_preflight(opts: &PerfOptions, meshes: &Path) -> Result<(), Error> {
-    let committed = |r: f64| scaling::SLOPE_MESHES.iter().any(|(c, _)| *c == r);
-    let meshed = |r: f64| meshes.join(format!("slope-r{r}.msh")).is_file();
-    let needs: Vec<String> =
-        opts.refine.iter().filter(|&&r| !committed(r) && !meshed(r)).map(|r| format!("refine {r}")).collect();
+    let refine = opts.refine.iter().filter(|&&r| scaling::needs_gmsh(r, meshes)).map(|r| format!("refine {r}"));
     let trials = opts.trials.then(|| "the trials against size".to_string());
-    let needs: Vec<String> = needs.into_iter().chain(trials).collect();
+    let needs: Vec<String> = refine.chain(trials).collect();
     if needs.is_empty() || crate::mesh::gmsh::gmsh_available() {
         return Ok(());
     }

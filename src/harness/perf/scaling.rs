@@ -29,7 +29,21 @@ pub fn slope_mesh(slope_geo: &Path, refine: u32, dir: &Path) -> Result<PathBuf, 
         "// The paper slope at refine = {refine} (cdem perf).\nrefine = {refine};\nInclude \"{}\";\n",
         include.display()
     );
-    mesh_text(&text, &format!("slope-r{refine}"), dir)
+    mesh_text(&text, &slope_mesh_name(refine), dir)
+}
+
+/// The name (no extension) of [`slope_mesh`]'s mesh at `refine`.
+fn slope_mesh_name(refine: u32) -> String {
+    format!("slope-r{refine}")
+}
+
+/// Whether [`scaling_meshes`] would run gmsh for `refine` with `dir`: no
+/// committed mesh of [`SLOPE_MESHES`], and a whole `refine` from 1 up not
+/// meshed into `dir` yet (any other `refine` is its error, not gmsh's).
+pub fn needs_gmsh(refine: f64, dir: &Path) -> bool {
+    let committed = SLOPE_MESHES.iter().any(|(c, _)| *c == refine);
+    let whole = refine.fract() == 0.0 && refine >= 1.0;
+    !committed && whole && !dir.join(format!("{}.msh", slope_mesh_name(refine as u32))).is_file()
 }
 
 /// Meshes `text` (a `.geo`) with gmsh as `dir/name.msh`, reusing the file.

@@ -5,24 +5,8 @@
 
 use std::time::Instant;
 
-/// STREAM triad `a = b + s c` over three arrays of `n` f64 on the current
-/// rayon pool: the best of `repeats` passes, in GB/s (24 B per iteration;
-/// the write-allocate read is not counted, as in STREAM).
-pub fn stream_triad(n: usize, repeats: usize) -> f64 {
-    let mut a = vec![0.0; n];
-    let b: Vec<f64> = (0..n).map(|i| i as f64).collect();
-    let c: Vec<f64> = (0..n).map(|i| (n - i) as f64).collect();
-    let mut best = f64::INFINITY;
-    for _ in 0..repeats.max(1) {
-        let t = Instant::now();
-        triad_par(&mut a, &b, &c, 3.0);
-        best = best.min(t.elapsed().as_secs_f64());
-    }
-    std::hint::black_box(&a);
-    24.0 * n as f64 / best / 1e9
-}
-
-/// The triad's arrays, kept for batches timed between other measurements
+/// STREAM triad `a = b + s c` over three arrays of f64 on the current rayon
+/// pool, kept for batches timed between other measurements
 /// ([`Triad::batch`]): `cdem perf` interleaves them with the step's
 /// batches, so that both see the same moments of a shared machine.
 pub struct Triad {
@@ -37,8 +21,8 @@ impl Triad {
         Self { a: vec![0.0; n], b: (0..n).map(|i| i as f64).collect(), c: (0..n).map(|i| (n - i) as f64).collect() }
     }
 
-    /// `passes` triads on the current rayon pool timed together (GB/s, 24 B
-    /// per iteration as in [`stream_triad`]).
+    /// `passes` triads timed together, in GB/s (24 B per iteration; the
+    /// write-allocate read is not counted, as in STREAM).
     pub fn batch(&mut self, passes: usize) -> f64 {
         let passes = passes.max(1);
         let t = Instant::now();

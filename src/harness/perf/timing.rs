@@ -154,8 +154,7 @@ fn median_pass(passes: usize, mut pass: impl FnMut()) -> f64 {
             t.elapsed().as_secs_f64() / per_batch as f64
         })
         .collect();
-    batches.sort_by(f64::total_cmp);
-    batches[2]
+    median(&mut batches)
 }
 
 /// Times the element passes of [`PlasticPassFigure`]: `elastic` and
