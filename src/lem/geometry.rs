@@ -334,35 +334,33 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
     let b = (xe - xx) / n as f64;
     let (r, r2) = (c.r, c.r * c.r);
     let half_inv_r = 0.5 / r;
-    // Pass 1, slice ends: x, u = x - xc, w = sqrt(r^2 - u^2), ground height.
+    // Pass 1, slice ends: x, u = x - xc, w = sqrt(r^2 - u^2) (branch-free,
+    // it vectorizes), then the ground height segment by segment.
     for v in [&mut s.xb, &mut s.ub, &mut s.wb, &mut s.zg] {
         sized(v, n + 1);
     }
-    // The ground segment under x and its slope, moved right as x grows.
-    let mut k = 0usize;
-    let slope_of = |k: usize| (g[k + 1][1] - g[k][1]) / (g[k + 1][0] - g[k][0]);
-    let mut slope = slope_of(0);
-    for (i, (((xb, ub), wb), zg)) in
-        s.xb.iter_mut().zip(s.ub.iter_mut()).zip(s.wb.iter_mut()).zip(s.zg.iter_mut()).enumerate()
-    {
-        let x = if i == 0 {
-            xx
-        } else if i == n {
-            xe
-        } else {
-            xx + i as f64 * b
-        };
+    for (i, ((xb, ub), wb)) in s.xb.iter_mut().zip(s.ub.iter_mut()).zip(s.wb.iter_mut()).enumerate() {
+        let x = xx + i as f64 * b;
         let u = x - c.xc;
-        if k + 2 < g.len() && g[k + 1][0] <= x {
-            while k + 2 < g.len() && g[k + 1][0] <= x {
-                k += 1;
-            }
-            slope = slope_of(k);
-        }
         *xb = x;
         *ub = u;
         *wb = (r2 - u * u).max(0.0).sqrt();
-        *zg = g[k][1] + slope * (x - g[k][0]);
+    }
+    // The ends exactly (`xx + n b` may round off `xe`).
+    for (i, x) in [(0, xx), (n, xe)] {
+        let u = x - c.xc;
+        (s.xb[i], s.ub[i], s.wb[i]) = (x, u, (r2 - u * u).max(0.0).sqrt());
+    }
+    // The ends are in order of x: ground segment k takes those left of its
+    // right vertex that no segment before it took (the last one, the rest).
+    let mut start = 0;
+    for k in 0..g.len() - 1 {
+        let end = if k + 2 < g.len() { start + s.xb[start..].partition_point(|&x| x < g[k + 1][0]) } else { n + 1 };
+        let (a, slope) = (g[k], (g[k + 1][1] - g[k][1]) / (g[k + 1][0] - g[k][0]));
+        for (zg, &x) in s.zg[start..end].iter_mut().zip(&s.xb[start..end]) {
+            *zg = a[1] + slope * (x - a[0]);
+        }
+        start = end;
     }
     // Pass 2, per slice and branch-free: base direction from the chord,
     // subtended angle, area under the ground (trapezoid) less the arc's.
