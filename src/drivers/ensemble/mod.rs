@@ -465,10 +465,16 @@ pub fn run_member(
     Ok(record)
 }
 
-/// Runs the members `range` in order; LEM-only members in parallel (results
-/// in member order, independent of the thread count). `circle`: the mean
-/// critical circle ([`mean_critical_circle`], computed once by the caller,
-/// which also reports it). `progress(done)` after each batch.
+/// Runs the members `range`, several at once (results in member order,
+/// independent of the thread count: each member's run is, ensemble.md
+/// "Determinism"). LEM-only members in batches of 256; members with a scene
+/// in batches of twice the thread count, so that each thread mostly runs a
+/// member of its own, which on a model of a thousand elements is faster
+/// than all threads on one member (the shards' measurement,
+/// references/performance.md), with at most that many models in memory.
+/// `circle`: the mean critical circle ([`mean_critical_circle`], computed
+/// once by the caller, which also reports it). `progress(done)` after each
+/// batch.
 pub fn run_members(
     input: &EnsembleInput,
     base: u64,
@@ -476,16 +482,12 @@ pub fn run_members(
     circle: Option<lem::Circle>,
     progress: &mut dyn FnMut(usize),
 ) -> crate::Result<Vec<MemberRecord>> {
-    let parallel = input.analyses == [Analysis::Lem];
-    let batch = if parallel { 256 } else { 1 };
+    let batch = if input.analyses == [Analysis::Lem] { 256 } else { 2 * rayon::current_num_threads().max(1) };
     let mut out = Vec::with_capacity(range.len());
     let ks: Vec<usize> = range.collect();
     for chunk in ks.chunks(batch) {
-        let records: Vec<crate::Result<MemberRecord>> = if parallel {
-            chunk.par_iter().map(|&k| run_member(input, base, k, circle)).collect()
-        } else {
-            chunk.iter().map(|&k| run_member(input, base, k, circle)).collect()
-        };
+        let records: Vec<crate::Result<MemberRecord>> =
+            chunk.par_iter().with_max_len(1).map(|&k| run_member(input, base, k, circle)).collect();
         for r in records {
             out.push(r?);
         }
