@@ -23,14 +23,13 @@ pub fn pyslope_grid_search(base: crate::lem::LemInput) -> crate::lem::LemInput {
     LemInput { mode: Mode::Search(spec), methods: vec![Method::Bishop], ..base }
 }
 
-/// The time of [`pyslope_grid_search`] on the LEM input at `input`: best of
+/// The time of the search `input` (made by [`pyslope_grid_search`]): best of
 /// `repeats` (s).
-pub fn time_lem_grid(input: &Path, repeats: usize) -> Result<f64, Error> {
-    let input = pyslope_grid_search(crate::lem::LemInput::load(input)?);
+pub fn time_lem_grid(input: &crate::lem::LemInput, repeats: usize) -> Result<f64, Error> {
     let mut best = f64::INFINITY;
     for _ in 0..repeats.max(1) {
         let t = Instant::now();
-        crate::lem::analyse(&input)?;
+        crate::lem::analyse(input)?;
         best = best.min(t.elapsed().as_secs_f64());
     }
     Ok(best)
