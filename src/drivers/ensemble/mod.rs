@@ -65,6 +65,18 @@ pub struct EnsembleInput {
     pub digest: u64,
 }
 
+/// The elements of the members [`run_members`] keeps in memory at once:
+/// a model with its solver takes about 20 kB per element at its peak (2 GB
+/// at 100,000 elements, references/perf/full-2026-12-06-tenth/scaling.csv),
+/// so about 2 GB.
+pub const ELEMENTS_AT_ONCE: usize = 100_000;
+
+/// Members of `elements` elements run at once on `threads` threads: twice
+/// the threads, within [`ELEMENTS_AT_ONCE`], at least one.
+fn models_at_once(elements: usize, threads: usize) -> usize {
+    (2 * threads.max(1)).min(ELEMENTS_AT_ONCE / elements.max(1)).max(1)
+}
+
 /// A drawn value.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Draw {
@@ -269,6 +281,22 @@ impl EnsembleInput {
         Ok((seed, draws))
     }
 
+    /// How many members [`run_members`] runs at once. LEM-only members:
+    /// 256. Members with a model: twice the thread count, so that each
+    /// thread mostly runs a member of its own (on a model of a thousand
+    /// elements one member per core is faster than one member on all of
+    /// them: references/performance.md, "2026-12-06 (tenth)"), but no more
+    /// than keep [`ELEMENTS_AT_ONCE`] elements in memory together (at least
+    /// one member). Reads the mesh for its element count.
+    pub fn members_at_once(&self) -> crate::Result<usize> {
+        match &self.source {
+            Source::Scene { scene, .. } if self.analyses != [Analysis::Lem] => {
+                Ok(models_at_once(super::input::read_mesh(scene)?.cells.len(), rayon::current_num_threads()))
+            }
+            _ => Ok(256),
+        }
+    }
+
     /// The input of the member with perturbation seed `seed` and `draws`:
     /// the mean input with the seed and every drawn value set on it, checked
     /// as the file would be.
@@ -465,16 +493,11 @@ pub fn run_member(
     Ok(record)
 }
 
-/// Runs the members `range`, several at once (results in member order,
-/// independent of the thread count: each member's run is, ensemble.md
-/// "Determinism"). LEM-only members in batches of 256; members with a scene
-/// in batches of twice the thread count, so that each thread mostly runs a
-/// member of its own, which on a model of a thousand elements is faster
-/// than all threads on one member (the shards' measurement,
-/// references/performance.md), with at most that many models in memory.
-/// `circle`: the mean critical circle ([`mean_critical_circle`], computed
-/// once by the caller, which also reports it). `progress(done)` after each
-/// batch.
+/// Runs the members `range`, [`EnsembleInput::members_at_once`] at a time
+/// (results in member order, independent of the thread count: each
+/// member's run is, references/ensemble.md "Determinism"). `circle`: the
+/// mean critical circle ([`mean_critical_circle`], computed once by the
+/// caller, which also reports it). `progress(done)` after each batch.
 pub fn run_members(
     input: &EnsembleInput,
     base: u64,
@@ -482,7 +505,7 @@ pub fn run_members(
     circle: Option<lem::Circle>,
     progress: &mut dyn FnMut(usize),
 ) -> crate::Result<Vec<MemberRecord>> {
-    let batch = if input.analyses == [Analysis::Lem] { 256 } else { 2 * rayon::current_num_threads().max(1) };
+    let batch = input.members_at_once()?;
     let mut out = Vec::with_capacity(range.len());
     let ks: Vec<usize> = range.collect();
     for chunk in ks.chunks(batch) {
@@ -521,4 +544,21 @@ pub fn pf_by(records: &[MemberRecord], key: &str, bins: usize) -> Vec<(f64, f64,
         .filter(|(_, c)| c.0 > 0)
         .map(|(k, &(n, failed))| (lo + (k as f64 + 0.5) * width, failed as f64 / n as f64, n))
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Small models: twice the threads; large ones: no more than
+    /// `ELEMENTS_AT_ONCE` elements together, and never fewer than one member.
+    #[test]
+    fn members_at_once_are_bounded_by_threads_and_elements() {
+        assert_eq!(models_at_once(1000, 2), 4);
+        assert_eq!(models_at_once(1000, 64), 100);
+        assert_eq!(models_at_once(30_000, 8), 3);
+        assert_eq!(models_at_once(60_000, 2), 1);
+        assert_eq!(models_at_once(250_000, 2), 1);
+        assert_eq!(models_at_once(0, 0), 2);
+    }
 }
