@@ -102,6 +102,9 @@ pub struct ShardsFigure {
     /// Threads of the one process, and of each shard.
     pub threads: usize,
     pub threads_per_shard: usize,
+    /// Members the one process runs at once
+    /// ([`EnsembleInput::members_at_once`] on its threads).
+    pub members_at_once: usize,
     /// `cdem ensemble INPUT` as one process (s).
     pub one_process_s: f64,
     /// The same with one thread (s): what two shards on one thread each
@@ -285,6 +288,7 @@ pub fn shards_figure(
         members,
         threads,
         threads_per_shard: per_shard,
+        members_at_once: EnsembleInput::load(&root.join(input))?.members_at_once()?,
         one_process_s,
         one_thread_s,
         shards_s,

@@ -226,12 +226,13 @@ pub fn ensemble_perf_rows(f: &EnsembleFigures) -> Vec<Check> {
     };
     let shards_row =
         row(shards).value(sh.speedup(), reg::GOAL_TWO_SHARDS_SPEEDUP, sh.one_process_s).with_note(format!(
-            "{} members: one process {:.1} s on {} threads ({:.1} s on 1: threads gain {:.2}x); 2 shards ({} \
-             thread(s) each) {:.1} s + merge {:.2} s, {:.2}x the one process on 1 thread; members.jsonl {} ({} \
-             bytes); load average {} before, {} after",
+            "{} members: one process {:.1} s on {} threads, {} members at once ({:.1} s on 1: threads gain \
+             {:.2}x); 2 shards ({} thread(s) each) {:.1} s + merge {:.2} s, {:.2}x the one process on 1 thread; \
+             members.jsonl {} ({} bytes); load average {} before, {} after",
             sh.members,
             sh.one_process_s,
             sh.threads,
+            sh.members_at_once,
             sh.one_thread_s,
             sh.thread_speedup(),
             sh.threads_per_shard,
