@@ -193,9 +193,9 @@ impl EnsembleFigures {
         let _ = writeln!(
             md,
             "| `{}`, {} members: 2 concurrent shard processes ({} thread(s) each) + merge against one process ({} \
-             threads, {} members at once; and 1 thread) | {:.1} s + {:.2} s against {:.1} s (1 thread: {:.1} s): speed-up {:.2} ({:.2} \
-             over 1 thread; the threads alone {:.2}); members.jsonl {} ({} bytes); 1-min load average {} before, {} \
-             after on {} cores | >= {} |",
+             threads, {} members at once; and 1 thread) | {:.1} s + {:.2} s against {:.1} s (1 thread: {:.1} s): \
+             speed-up {:.2} ({:.2} over 1 thread; the threads alone {:.2}); members.jsonl {} ({} bytes); 1-min load \
+             average {} before, {} after on {} cores | >= {} |",
             s.input,
             s.members,
             s.threads_per_shard,
