@@ -223,6 +223,7 @@ fn cell_pass(
         u,
         cdem::physics::plastic::Volumetric::Cell,
         0.0,
+        &[],
         hist,
         &mut f,
     );

@@ -148,6 +148,7 @@ fn plastic_blocks_yield_on_the_effective_stress() {
             &u,
             Volumetric::Cell,
             pore,
+            &[],
             &mut hist,
             &mut f,
         );

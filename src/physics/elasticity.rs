@@ -25,6 +25,7 @@ impl From<YoungPoisson> for Lame {
 impl Lame {
     /// Stress (Pa, Voigt) of a strain (Voigt xx yy zz yz xz xy, engineering
     /// shear): `sigma = lambda tr(eps) I + 2 mu eps`.
+    #[inline(always)]
     pub fn stress_voigt(&self, eps: [f64; 6]) -> [f64; 6] {
         let Lame { lambda, mu } = *self;
         let tr = eps[0] + eps[1] + eps[2];

@@ -118,6 +118,7 @@ impl MohrCoulomb {
         (0..PLANES).map(|p| self.excess(p, s)).fold(f64::NEG_INFINITY, f64::max)
     }
 
+    #[inline(always)]
     fn excess(&self, p: usize, s: [f64; 3]) -> f64 {
         let (a, b) = (1.0 + self.sin_phi, 1.0 - self.sin_phi);
         match p {
@@ -141,6 +142,7 @@ impl MohrCoulomb {
 
     /// [`Self::margin`] from the principal values `s` (descending), for a
     /// batch whose values came from [`principal_values_of`].
+    #[inline(always)]
     pub fn margin_of(&self, s: [f64; 3]) -> f64 {
         -self.excess(0, s).max(s[0] - self.tensile)
     }
@@ -153,6 +155,7 @@ impl MohrCoulomb {
     /// `2 q / sqrt 3 < T - p`, tested squared (no square root or division
     /// on the hot path; a filter only: what it lets through the exact test
     /// below would return unchanged too).
+    #[inline(always)]
     fn surely_elastic(&self, sigma: &[f64; 6]) -> bool {
         const THIRD: f64 = 1.0 / 3.0;
         const FRAC_1_SQRT_3: f64 = 0.577_350_269_189_625_8;
@@ -176,6 +179,7 @@ impl MohrCoulomb {
     /// to try first: the shear plane the result violates more (2: it left
     /// the sextant across `s1 = s2`, 1: across `s2 = s3`; de Souza Neto's
     /// Box 8.5 picks the edge the same way).
+    #[inline(always)]
     fn main_plane_return(&self, lame: Lame, s: [f64; 3], excess: f64, tol: f64) -> Result<[f64; 3], usize> {
         let Lame { lambda, mu } = lame;
         let (sf, sp) = (self.sin_phi, self.sin_psi);
@@ -245,6 +249,7 @@ impl MohrCoulomb {
     /// [`Self::return_map`] given the trial's principal values `values`
     /// (from [`principal_values_of`], as a cell's pass computes them for all
     /// its tetrahedra at once): the same stress and flag, bit for bit.
+    #[inline(always)]
     pub fn return_map_with(&self, lame: Lame, trial: [f64; 6], values: [f64; 3]) -> ([f64; 6], Yield) {
         if self.surely_elastic(&trial) {
             return (trial, Yield::Elastic);
@@ -254,6 +259,7 @@ impl MohrCoulomb {
 
     /// The return mapping past the invariant filter, from the trial's
     /// principal values `values`.
+    #[inline(always)]
     fn return_from(&self, lame: Lame, trial: [f64; 6], values: [f64; 3]) -> ([f64; 6], Yield) {
         // The cut-off is infinite without one (phi = 0 and no `tensile`): it
         // does not set the scale, or every trial would pass as elastic.
@@ -273,6 +279,24 @@ impl MohrCoulomb {
                 Err(first) => edges = [first, 3 - first],
             }
         }
+        self.return_beyond(lame, trial, values, tol, edges)
+    }
+
+    /// The return past the main plane alone: onto an edge (`edges`, in the
+    /// order to try), a tension plane or the apex. Not inlined, unlike the
+    /// frequent part above: the hot kernels of the plastic pass are
+    /// `#[inline(always)]` into [`super::plastic::plastic_element_force`],
+    /// 1.15x faster than as calls (references/performance.md, "2026-12-06
+    /// (eleventh)"), and this rarer part would only swell it.
+    #[inline(never)]
+    fn return_beyond(
+        &self,
+        lame: Lame,
+        trial: [f64; 6],
+        values: [f64; 3],
+        tol: f64,
+        edges: [usize; 2],
+    ) -> ([f64; 6], Yield) {
         // Below the cut-off the general search's sets [0] and [3] decline,
         // and it tries the two edges next: in closed form here, the edge
         // the main-plane return pointed to first. The old order's stress
@@ -403,6 +427,7 @@ fn principal_values(sigma: &[f64; 6]) -> [f64; 3] {
 /// [`principal_values`] of every stress of `sigma` into `out` (at most
 /// [`MAX_TETS`]), on their components gathered first, so that the compiler
 /// vectorizes the loop over the stresses.
+#[inline(always)]
 pub fn principal_values_of(sigma: &[[f64; 6]], out: &mut [[f64; 3]]) {
     const N: usize = MAX_TETS;
     let n = sigma.len().min(out.len()).min(N);
@@ -471,6 +496,7 @@ fn cos_third_acos(r: f64) -> f64 {
 /// and the like, `P_2 = I - P_1 - P_3`. Where two principal values coincide
 /// (within 1e-6 of the spread) only their pair's projector is defined, and
 /// the pair takes its mean change (the return keeps a pair equal).
+#[inline(always)]
 fn spectral_update(sigma: &[f64; 6], old: [f64; 3], new: [f64; 3]) -> [f64; 6] {
     let d = [new[0] - old[0], new[1] - old[1], new[2] - old[2]];
     let spread = old[0] - old[2];
@@ -590,6 +616,7 @@ fn solve(a: &[[f64; 3]; 3], b: &[f64; 3], n: usize) -> Option<[f64; 3]> {
 
 /// Strain of a stress increment through the elastic compliance (Voigt,
 /// engineering shear): `eps = D^-1 sigma`.
+#[inline(always)]
 pub fn compliance(lame: Lame, sigma: [f64; 6]) -> [f64; 6] {
     let Lame { lambda, mu } = lame;
     let tr = sigma[0] + sigma[1] + sigma[2];

@@ -201,6 +201,9 @@ pub struct CellStep {
     /// A smoothed cell's `alpha dev(sigma_cell)` (Pa, Voigt), the
     /// volume-averaged deviatoric stress its vertices average; zero otherwise.
     pub deviatoric: [f64; 6],
+    /// Its screen's radius ([`screen_radius`], m) when the pass was given
+    /// the sensitivities and left every tetrahedron elastic; 0 otherwise.
+    pub radius: f64,
 }
 
 /// The deviatoric part of a Voigt strain or stress.
@@ -266,6 +269,10 @@ pub fn add_pressure_force(grad: &[[f64; 3]], pressure: f64, f_e: &mut [f64]) {
 /// `pore` is the pore pressure `u` of the cell (Pa, compression positive;
 /// 0 when dry): the stress is total, and the cell yields on the effective
 /// stress `sigma' = sigma + u I` (Terzaghi; tension positive).
+/// `sensitivity` are the tetrahedra's `G_t` ([`stress_sensitivity`]) of a
+/// cell with a [`Screen`], empty for none: if every tetrahedron is elastic
+/// after the pass, [`CellStep::radius`] is then the screen's radius from
+/// the stresses the pass already has (what [`screen_radius`] computes anew).
 #[allow(clippy::too_many_arguments)]
 pub fn plastic_element_force(
     topo: &TetTopology,
@@ -277,6 +284,7 @@ pub fn plastic_element_force(
     u: &[f64],
     volumetric: Volumetric,
     pore: f64,
+    sensitivity: &[f64],
     hist: &mut [TetPlastic],
     f_e: &mut [f64],
 ) -> CellStep {
@@ -357,7 +365,11 @@ pub fn plastic_element_force(
             }
         }
     }
-    CellStep { volumetric: e, pressure: pressure / volume, deviatoric }
+    let radius = match sensitivity.len() >= n && hist[..n].iter().all(|h| h.now == Yield::Elastic) {
+        true => radius_of(surface, &values[..n], sensitivity),
+        false => 0.0,
+    };
+    CellStep { volumetric: e, pressure: pressure / volume, deviatoric, radius }
 }
 
 /// `eps + shift` (None: `eps`).
@@ -503,8 +515,16 @@ pub fn screen_radius(
     }
     let mut values = [[0.0; 3]; MAX_TETS];
     principal_values_of(&sigma[..n], &mut values[..n]);
+    radius_of(surface, &values[..n], sensitivity)
+}
+
+/// `min_t margin_t / (2 G_t)` from the tetrahedra's principal effective
+/// stresses `values` and sensitivities `G_t`; 0 if one is on or outside
+/// the surface.
+#[inline(always)]
+fn radius_of(surface: &MohrCoulomb, values: &[[f64; 3]], sensitivity: &[f64]) -> f64 {
     let mut radius = f64::INFINITY;
-    for (&s, &g) in values[..n].iter().zip(sensitivity) {
+    for (&s, &g) in values.iter().zip(sensitivity) {
         let margin = surface.margin_of(s);
         if !(margin > 0.0) {
             return 0.0;

@@ -13,10 +13,9 @@ use crate::model::{Model, ELEMENT_SLOT};
 use crate::physics::damping::spring_dashpot;
 use crate::physics::element::element_force;
 use crate::physics::joint::{JointLaw, JointState};
-use crate::physics::mohr_coulomb::Yield;
 use crate::physics::plastic::{
     add_pressure_force, add_stress_force, cell_strains, cell_volumetric_strain, deviatoric, plastic_element_force,
-    screen_radius, PlasticCells, RockState, Volumetric,
+    PlasticCells, RockState, Volumetric,
 };
 use crate::physics::spring::{relative_displacement, spring_contact_force, SpringState};
 
@@ -158,13 +157,13 @@ pub fn element_forces_plastic(model: &Model, rock: &mut RockState, u: &[f64], f_
                     let (topo, tets, lame) =
                         (cells.topology(el.kind[e]), cells.tets(e), model.materials[material].lame);
                     let pore = model.water.as_ref().map_or(0.0, |w| w.element_pressure[e]);
+                    // A hexahedron's screen: its radius from the pass's own stresses.
+                    let g = if cells.nodal[e] { &[][..] } else { cells.sensitivity(e) };
                     let step =
-                        plastic_element_force(topo, tets, &el.grad[r], lame, mc, nodes, u, mode, pore, hist, f_e);
+                        plastic_element_force(topo, tets, &el.grad[r], lame, mc, nodes, u, mode, pore, g, hist, f_e);
                     (*theta, *p, *cs) = (step.volumetric, step.pressure, step.deviatoric);
-                    let g = cells.sensitivity(e);
-                    if !cells.nodal[e] && hist[..tets.len()].iter().all(|h| h.now == Yield::Elastic) {
-                        let radius = screen_radius(topo, tets, lame, mc, g, nodes, u, pore, hist);
-                        screen.arm(el.stiffness(e), nodes, u, f_e, radius);
+                    if step.radius > 0.0 {
+                        screen.arm(el.stiffness(e), nodes, u, f_e, step.radius);
                     } else {
                         screen.radius2 = 0.0;
                     }

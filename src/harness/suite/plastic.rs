@@ -68,7 +68,20 @@ pub fn compression(strength: RockStrength, confinement: f64, steps: usize, d_axi
     let mut f = [0.0; 24];
     let mut forces = |exx: f64, ezz: f64, hist: &mut [TetPlastic]| {
         let u: Vec<f64> = UNIT_HEX.iter().flat_map(|x| [exx * x[0], 0.0, ezz * x[2]]).collect();
-        plastic_element_force(&topo, &tets, &ops.grad, lame, &surface, &nodes, &u, Volumetric::Cell, 0.0, hist, &mut f);
+        plastic_element_force(
+            &topo,
+            &tets,
+            &ops.grad,
+            lame,
+            &surface,
+            &nodes,
+            &u,
+            Volumetric::Cell,
+            0.0,
+            &[],
+            hist,
+            &mut f,
+        );
         // Top face (z = 1, corners 4-7): sigma_zz = sum f_z; the face x = 1
         // (corners 1, 2, 5, 6): sigma_xx = sum f_x.
         let szz: f64 = (4..8).map(|c| f[3 * c + 2]).sum();
