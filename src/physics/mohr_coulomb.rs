@@ -206,6 +206,7 @@ impl MohrCoulomb {
     /// documentation): None if a multiplier is negative or the result
     /// violates another plane. Equal to `return_to(.., &[0, q], ..)` to
     /// rounding.
+    #[inline(always)]
     fn edge_return(&self, lame: Lame, s: [f64; 3], q: usize, tol: f64) -> Option<[f64; 3]> {
         let Lame { lambda, mu } = lame;
         let (m0, _, n0) = self.plane(0);
@@ -279,24 +280,6 @@ impl MohrCoulomb {
                 Err(first) => edges = [first, 3 - first],
             }
         }
-        self.return_beyond(lame, trial, values, tol, edges)
-    }
-
-    /// The return past the main plane alone: onto an edge (`edges`, in the
-    /// order to try), a tension plane or the apex. Not inlined, unlike the
-    /// frequent part above: the hot kernels of the plastic pass are
-    /// `#[inline(always)]` into [`super::plastic::plastic_element_force`],
-    /// 1.15x faster than as calls (references/performance.md, "2026-12-06
-    /// (eleventh)"), and this rarer part would only swell it.
-    #[inline(never)]
-    fn return_beyond(
-        &self,
-        lame: Lame,
-        trial: [f64; 6],
-        values: [f64; 3],
-        tol: f64,
-        edges: [usize; 2],
-    ) -> ([f64; 6], Yield) {
         // Below the cut-off the general search's sets [0] and [3] decline,
         // and it tries the two edges next: in closed form here, the edge
         // the main-plane return pointed to first. The old order's stress
@@ -309,6 +292,19 @@ impl MohrCoulomb {
                 }
             }
         }
+        self.return_general(lame, trial, values, tol)
+    }
+
+    /// The return onto a tension plane or the apex, the general search
+    /// over [`ACTIVE_SETS`]. Not inlined, unlike the frequent part above
+    /// (the main plane, about 78 % of the yielding tetrahedra on the paper
+    /// slope's strength reduction, and the edges, 19 %): the hot kernels of
+    /// the plastic pass are `#[inline(always)]` into
+    /// [`super::plastic::plastic_element_force`], 1.15x faster than as
+    /// calls (references/performance.md, "2026-12-06 (eleventh)"), and this
+    /// rare part would only swell it.
+    #[inline(never)]
+    fn return_general(&self, lame: Lame, trial: [f64; 6], values: [f64; 3], tol: f64) -> ([f64; 6], Yield) {
         let d = principal_elasticity(lame);
         let planes = [0, 1, 2, 3, 4, 5].map(|p| {
             let (m, k, n) = self.plane(p);

@@ -183,29 +183,6 @@ impl BlockMass {
         Ok(Self { ptr, nodes, cluster, slot_of, row, mass, inverse, diagonal })
     }
 
-    fn cluster_nodes(&self, i: usize) -> &[u32] {
-        let c = self.cluster[i] as usize;
-        &self.nodes[self.ptr[c] as usize..self.ptr[c + 1] as usize]
-    }
-
-    /// `(M x)_i` for node `i`.
-    #[inline]
-    fn mass_times(&self, i: usize, x: impl Fn(usize) -> f64) -> [f64; 3] {
-        let nodes = self.cluster_nodes(i);
-        let w = 3 * nodes.len();
-        let rows = &self.mass[self.row[i]..self.row[i] + 3 * w];
-        let mut y = [0.0; 3];
-        for (j, &node) in nodes.iter().enumerate() {
-            for d in 0..3 {
-                let xj = x(3 * node as usize + d);
-                for (a, ya) in y.iter_mut().enumerate() {
-                    *ya += rows[a * w + 3 * j + d] * xj;
-                }
-            }
-        }
-        y
-    }
-
     /// All accelerations `M^-1 f` in two parallel passes, for the update:
     /// `f` is gathered once into `r` in slot order (each cluster's copies
     /// contiguous), then each slot's 3 rows of `M^-1` multiply its
@@ -239,13 +216,27 @@ impl BlockMass {
         [acc[s], acc[s + 1], acc[s + 2]]
     }
 
-    /// `x . M x`, each node's share written to `per_node` (one per node)
-    /// and summed in node order, so the result is thread-count independent.
-    pub fn quadratic(&self, x: &[f64], per_node: &mut [f64]) -> f64 {
-        per_node.par_iter_mut().with_min_len(1024).enumerate().for_each(|(i, q)| {
-            let y = self.mass_times(i, |k| x[k]);
-            *q = (0..3).map(|a| x[3 * i + a] * y[a]).sum::<f64>();
+    /// `x . M x`: `x` gathered into `r` in slot order as for
+    /// [`Self::accelerations`], each node's share `x_i . (M x)_i` written to
+    /// `share` (slot order), and the shares summed in node order, so the
+    /// result is thread-count independent.
+    pub fn quadratic(&self, x: &[f64], r: &mut [f64], share: &mut [f64]) -> f64 {
+        r.par_chunks_mut(3).with_min_len(512).enumerate().for_each(|(slot, r)| {
+            let i = self.nodes[slot] as usize;
+            r.copy_from_slice(&x[3 * i..3 * i + 3]);
         });
-        per_node.iter().sum()
+        let r = &*r;
+        share.par_iter_mut().with_min_len(1024).enumerate().for_each(|(slot, q)| {
+            let c = self.cluster[self.nodes[slot] as usize] as usize;
+            let (lo, hi) = (3 * self.ptr[c] as usize, 3 * self.ptr[c + 1] as usize);
+            let w = hi - lo;
+            let start = self.row[self.nodes[slot] as usize];
+            let rows = &self.mass[start..start + 3 * w];
+            let y: [f64; 3] = std::array::from_fn(|a| {
+                rows[a * w..(a + 1) * w].iter().zip(&r[lo..hi]).fold(0.0, |s, (m, x)| s + m * x)
+            });
+            *q = (0..3).map(|a| r[3 * slot + a] * y[a]).sum::<f64>();
+        });
+        self.slot_of.iter().map(|&slot| share[slot as usize]).sum()
     }
 }

@@ -20,10 +20,10 @@ pub struct Inertia {
 #[derive(Debug, Clone)]
 struct Block {
     mass: BlockMass,
-    /// One value per node (the quadratic forms' shares).
+    /// One value per node (the quadratic forms' shares, in slot order).
     per_node: Vec<f64>,
     /// The unbalanced force and the acceleration, per component in
-    /// cluster-slot order.
+    /// cluster-slot order (the force's also the quadratic forms' `x`).
     slot_force: Vec<f64>,
     slot_acc: Vec<f64>,
 }
@@ -58,7 +58,7 @@ impl Inertia {
     /// `x . M x`.
     pub fn quadratic(&mut self, x: &[f64]) -> f64 {
         match &mut self.block {
-            Some(b) => b.mass.quadratic(x, &mut b.per_node),
+            Some(b) => b.mass.quadratic(x, &mut b.slot_force, &mut b.per_node),
             None => (0..x.len()).map(|k| self.lumped[k / 3] * x[k] * x[k]).sum(),
         }
     }
