@@ -249,12 +249,13 @@ impl MohrCoulomb {
 
     /// [`Self::return_map`] given the trial's principal values `values`
     /// (from [`principal_values_of`], as a cell's pass computes them for all
-    /// its tetrahedra at once): the same stress and flag, bit for bit.
+    /// its tetrahedra at once): the same stress and flag, bit for bit. With
+    /// the values at hand the invariant filter has nothing left to save, and
+    /// it is skipped: in the paper slope's strength reduction it cleared 1.8 %
+    /// of the tetrahedra of the cells that made a full pass (their screens
+    /// keep the clearly elastic cells out), for 6 % of the pass's time.
     #[inline(always)]
     pub fn return_map_with(&self, lame: Lame, trial: [f64; 6], values: [f64; 3]) -> ([f64; 6], Yield) {
-        if self.surely_elastic(&trial) {
-            return (trial, Yield::Elastic);
-        }
         self.return_from(lame, trial, values)
     }
 
@@ -855,6 +856,29 @@ mod tests {
             let p = principal_of(&s);
             assert!(mc.violation(p) < 1e-6 * 1e6, "{trial:?} -> {p:?}");
         }
+    }
+
+    #[test]
+    fn the_invariant_filter_changes_no_return() {
+        // The filter only ever lets through what the exact test returns
+        // unchanged: with and without it, the same stress and flag to the
+        // last bit, near the surface and far from it.
+        let l = lame();
+        let mc = rock(8e4, 25.0, 2e4, 5.0);
+        let mut next = uniform(3);
+        let mut cleared = 0;
+        for scale in [1e3, 3e4, 1e5, 1e6] {
+            for _ in 0..2000 {
+                let trial = [0; 6].map(|_| scale * next() - 0.5 * scale);
+                cleared += usize::from(mc.surely_elastic(&trial));
+                assert_eq!(
+                    mc.return_map(l, trial),
+                    mc.return_map_with(l, trial, principal_values(&trial)),
+                    "{trial:?}"
+                );
+            }
+        }
+        assert!(cleared > 1000, "the sweep exercises the filter: {cleared}");
     }
 
     #[test]
