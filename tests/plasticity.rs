@@ -314,6 +314,24 @@ fn the_elastic_screen_lets_no_tetrahedron_yield_inside_its_radius() {
         assert!(hist.iter().all(|h| h.now == Yield::Elastic), "the base state is elastic");
         let r = screen_radius(&topo, &tets, material.lame, &surface, &g, &nodes, &base, 0.0, &hist);
         assert!(r > 0.0, "an elastic cell has a radius");
+        // The step arms its screens with the radius the pass itself returns
+        // when given the sensitivities: the same, bit for bit.
+        let mut again = hist;
+        let step = cdem::physics::plastic::plastic_element_force(
+            &topo,
+            &tets,
+            &ops.grad,
+            material.lame,
+            &surface,
+            &nodes,
+            &base,
+            cdem::physics::plastic::Volumetric::Cell,
+            0.0,
+            &g,
+            &mut again,
+            &mut vec![0.0; 24],
+        );
+        assert_eq!(step.radius.to_bits(), r.to_bits(), "the pass's radius is screen_radius's");
         let mut screen = Screen::default();
         screen.arm(&k, &nodes, &base, &f0, r);
         for trial in 0..300 {
