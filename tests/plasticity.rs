@@ -329,7 +329,7 @@ fn the_elastic_screen_lets_no_tetrahedron_yield_inside_its_radius() {
             0.0,
             &g,
             &mut again,
-            &mut vec![0.0; 24],
+            &mut [0.0; 24],
         );
         assert_eq!(step.radius.to_bits(), r.to_bits(), "the pass's radius is screen_radius's");
         let mut screen = Screen::default();
