@@ -198,15 +198,23 @@ impl BlockMass {
         });
         let r = &*r;
         acc.par_chunks_mut(3).with_min_len(512).enumerate().for_each(|(slot, y)| {
-            let c = self.cluster[self.nodes[slot] as usize] as usize;
-            let (lo, hi) = (3 * self.ptr[c] as usize, 3 * self.ptr[c + 1] as usize);
+            let (lo, hi, start) = self.span(slot);
             let w = hi - lo;
-            let start = self.row[self.nodes[slot] as usize];
             let rows = &self.inverse[start..start + 3 * w];
             for (a, y) in y.iter_mut().enumerate() {
                 *y = rows[a * w..(a + 1) * w].iter().zip(&r[lo..hi]).map(|(m, x)| m * x).sum();
             }
         });
+    }
+
+    /// Slot `slot`'s cluster as components `lo..hi` in slot order, and
+    /// where its node's 3 rows (of the mass and of its inverse, `3 (hi - lo)`
+    /// values) start.
+    #[inline]
+    fn span(&self, slot: usize) -> (usize, usize, usize) {
+        let i = self.nodes[slot] as usize;
+        let c = self.cluster[i] as usize;
+        (3 * self.ptr[c] as usize, 3 * self.ptr[c + 1] as usize, self.row[i])
     }
 
     /// Node `i`'s acceleration in the output of [`Self::accelerations`].
@@ -227,10 +235,8 @@ impl BlockMass {
         });
         let r = &*r;
         share.par_iter_mut().with_min_len(1024).enumerate().for_each(|(slot, q)| {
-            let c = self.cluster[self.nodes[slot] as usize] as usize;
-            let (lo, hi) = (3 * self.ptr[c] as usize, 3 * self.ptr[c + 1] as usize);
+            let (lo, hi, start) = self.span(slot);
             let w = hi - lo;
-            let start = self.row[self.nodes[slot] as usize];
             let rows = &self.mass[start..start + 3 * w];
             let y: [f64; 3] = std::array::from_fn(|a| {
                 rows[a * w..(a + 1) * w].iter().zip(&r[lo..hi]).fold(0.0, |s, (m, x)| s + m * x)
