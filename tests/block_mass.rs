@@ -24,14 +24,14 @@ fn lambda_max(model: &Model, block: &BlockMass, iterations: usize) -> f64 {
     let n = 3 * model.n_nodes();
     let free = |k: usize| !model.fixed[k];
     let mut x: Vec<f64> = (0..n).map(|k| if free(k) { 1.0 + (0.61 * k as f64).sin() } else { 0.0 }).collect();
-    let (mut scratch, mut per_node) = (vec![0.0; 3 * model.n_nodes()], vec![0.0; model.n_nodes()]);
+    let (mut scratch, mut mx, mut per_node) = (vec![0.0; n], vec![0.0; n], vec![0.0; model.n_nodes()]);
     let (mut slot_force, mut slot_acc) = (vec![0.0; n], vec![0.0; n]);
     let mut lambda = 0.0;
     for _ in 0..iterations {
         state.u.copy_from_slice(&x);
         solver.internal_forces(model, &mut state);
         let kx = &state.f_int;
-        lambda = dot(&x, kx) / block.quadratic(&x, &mut scratch, &mut per_node);
+        lambda = dot(&x, kx) / block.quadratic(&x, &mut scratch, &mut mx, &mut per_node);
         block.accelerations(|k| if free(k) { kx[k] } else { 0.0 }, &mut slot_force, &mut slot_acc);
         let y: Vec<f64> = (0..model.n_nodes()).flat_map(|i| block.acceleration(&slot_acc, i)).collect();
         let norm = dot(&y, &y).sqrt();

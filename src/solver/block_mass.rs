@@ -52,17 +52,18 @@ use rayon::prelude::*;
 use crate::error::SolveError;
 use crate::model::Model;
 
-/// The blocks, stored by model node: node `i` owns the 3 rows of its
-/// cluster's mass and inverse mass, `3 x 3 n_c` each, at `row[i]`.
+/// The blocks, stored by cluster: cluster `c` (the copies of one mesh
+/// node, `n = 3 n_c` components) owns an `n x n` block of the mass and of its
+/// inverse at `start[c]`, column by column, so that a block times a vector
+/// advances all `n` sums of its rows together.
 #[derive(Debug, Clone)]
 pub struct BlockMass {
     /// Cluster `c` holds the model nodes `nodes[ptr[c]..ptr[c + 1]]`.
     ptr: Vec<u32>,
     nodes: Vec<u32>,
-    cluster: Vec<u32>,
     /// Model node -> its slot in `nodes` (the rows are stored in slot order).
     slot_of: Vec<u32>,
-    row: Vec<usize>,
+    start: Vec<usize>,
     mass: Vec<f64>,
     inverse: Vec<f64>,
     /// The diagonal of the mass, per node.
@@ -93,8 +94,6 @@ impl BlockMass {
         }
         let cluster: Vec<u32> = model.mesh_node.clone();
         let size = |c: usize| 3 * (ptr[c + 1] - ptr[c]) as usize;
-        let size_of_cluster =
-            |i: usize| (ptr[model.mesh_node[i] as usize + 1] - ptr[model.mesh_node[i] as usize]) as usize;
         let mut blocks: Vec<DMatrix<f64>> = (0..n_mesh).map(|c| DMatrix::zeros(size(c), size(c))).collect();
         let mut off = vec![0.0; 3 * n_nodes];
         // Adds the 3x3 block `k(a, b)` of K between nodes i and j.
@@ -149,46 +148,37 @@ impl BlockMass {
                 }
             }
         }
-        let mut row = Vec::with_capacity(n_nodes);
+        let mut start = Vec::with_capacity(n_mesh);
         let mut mass = Vec::new();
         let mut inverse = Vec::new();
         for b in blocks {
             let b = b * scale;
             let inv = b.clone().cholesky().ok_or(SolveError::NoTimeStep)?.inverse();
-            for l in 0..b.nrows() / 3 {
-                for r in 3 * l..3 * l + 3 {
-                    mass.extend(b.row(r).iter());
-                    inverse.extend(inv.row(r).iter());
-                }
-            }
+            // nalgebra stores a matrix column by column.
+            start.push(mass.len());
+            mass.extend_from_slice(b.as_slice());
+            inverse.extend_from_slice(inv.as_slice());
         }
-        // Rows were stored in cluster order; index them by model node.
-        let mut at = 0;
-        let mut row_of_slot = vec![0usize; n_nodes];
-        for c in 0..n_mesh {
-            for slot in ptr[c] as usize..ptr[c + 1] as usize {
-                row_of_slot[slot] = at;
-                at += 9 * (ptr[c + 1] - ptr[c]) as usize;
-            }
-        }
-        let mut slot_of = vec![0usize; n_nodes];
-        for (slot, &i) in nodes.iter().enumerate() {
-            slot_of[i as usize] = slot;
-        }
-        row.extend((0..n_nodes).map(|i| row_of_slot[slot_of[i]]));
         let diagonal = (0..n_nodes)
-            .map(|i| [0, 1, 2].map(|a| mass[row[i] + a * 3 * size_of_cluster(i) + 3 * local[i] + a]))
+            .map(|i| {
+                let c = cluster[i] as usize;
+                let n = size(c);
+                [0, 1, 2].map(|a| mass[start[c] + (3 * local[i] + a) * (n + 1)])
+            })
             .collect();
-        let slot_of = slot_of.iter().map(|&s| s as u32).collect();
-        Ok(Self { ptr, nodes, cluster, slot_of, row, mass, inverse, diagonal })
+        let mut slot_of = vec![0u32; n_nodes];
+        for (slot, &i) in nodes.iter().enumerate() {
+            slot_of[i as usize] = slot as u32;
+        }
+        Ok(Self { ptr, nodes, slot_of, start, mass, inverse, diagonal })
     }
 
     /// All accelerations `M^-1 f` in two parallel passes, for the update:
     /// `f` is gathered once into `r` in slot order (each cluster's copies
-    /// contiguous), then each slot's 3 rows of `M^-1` multiply its
-    /// cluster's part of `r` into `acc` (slot order; read it with
-    /// [`Self::acceleration`]). Each output has one writer: no reduction,
-    /// the result does not depend on the thread count.
+    /// contiguous), then each cluster's block of `M^-1` multiplies its part
+    /// of `r` into its part of `acc` (slot order; read it with
+    /// [`Self::acceleration`]). Each output has one writer and each sum a
+    /// fixed order: the result does not depend on the thread count.
     pub fn accelerations(&self, f: impl Fn(usize) -> f64 + Sync, r: &mut [f64], acc: &mut [f64]) {
         r.par_chunks_mut(3).with_min_len(512).enumerate().for_each(|(slot, r)| {
             let i = self.nodes[slot] as usize;
@@ -197,24 +187,28 @@ impl BlockMass {
             }
         });
         let r = &*r;
-        acc.par_chunks_mut(3).with_min_len(512).enumerate().for_each(|(slot, y)| {
-            let (lo, hi, start) = self.span(slot);
-            let w = hi - lo;
-            let rows = &self.inverse[start..start + 3 * w];
-            for (a, y) in y.iter_mut().enumerate() {
-                *y = rows[a * w..(a + 1) * w].iter().zip(&r[lo..hi]).map(|(m, x)| m * x).sum();
-            }
+        self.per_cluster(acc).into_par_iter().with_min_len(128).enumerate().for_each(|(c, y)| {
+            let (lo, hi) = self.span(c);
+            block_times(&self.inverse[self.start[c]..], &r[lo..hi], y, -0.0);
         });
     }
 
-    /// Slot `slot`'s cluster as components `lo..hi` in slot order, and
-    /// where its node's 3 rows (of the mass and of its inverse, `3 (hi - lo)`
-    /// values) start.
+    /// Cluster `c` as components `lo..hi` in slot order.
     #[inline]
-    fn span(&self, slot: usize) -> (usize, usize, usize) {
-        let i = self.nodes[slot] as usize;
-        let c = self.cluster[i] as usize;
-        (3 * self.ptr[c] as usize, 3 * self.ptr[c + 1] as usize, self.row[i])
+    fn span(&self, c: usize) -> (usize, usize) {
+        (3 * self.ptr[c] as usize, 3 * self.ptr[c + 1] as usize)
+    }
+
+    /// `x` (in slot order) cut into its clusters' parts.
+    fn per_cluster<'a>(&self, mut x: &'a mut [f64]) -> Vec<&'a mut [f64]> {
+        let mut parts = Vec::with_capacity(self.start.len());
+        for c in 0..self.start.len() {
+            let (lo, hi) = self.span(c);
+            let (part, rest) = x.split_at_mut(hi - lo);
+            parts.push(part);
+            x = rest;
+        }
+        parts
     }
 
     /// Node `i`'s acceleration in the output of [`Self::accelerations`].
@@ -225,24 +219,39 @@ impl BlockMass {
     }
 
     /// `x . M x`: `x` gathered into `r` in slot order as for
-    /// [`Self::accelerations`], each node's share `x_i . (M x)_i` written to
-    /// `share` (slot order), and the shares summed in node order, so the
-    /// result is thread-count independent.
-    pub fn quadratic(&self, x: &[f64], r: &mut [f64], share: &mut [f64]) -> f64 {
+    /// [`Self::accelerations`], `M x` per cluster into `mx`, each node's
+    /// share `x_i . (M x)_i` written to `share` (slot order), and the shares
+    /// summed in node order, so the result is thread-count independent.
+    pub fn quadratic(&self, x: &[f64], r: &mut [f64], mx: &mut [f64], share: &mut [f64]) -> f64 {
         r.par_chunks_mut(3).with_min_len(512).enumerate().for_each(|(slot, r)| {
             let i = self.nodes[slot] as usize;
             r.copy_from_slice(&x[3 * i..3 * i + 3]);
         });
         let r = &*r;
+        self.per_cluster(mx).into_par_iter().with_min_len(128).enumerate().for_each(|(c, y)| {
+            let (lo, hi) = self.span(c);
+            block_times(&self.mass[self.start[c]..], &r[lo..hi], y, 0.0);
+        });
+        let mx = &*mx;
         share.par_iter_mut().with_min_len(1024).enumerate().for_each(|(slot, q)| {
-            let (lo, hi, start) = self.span(slot);
-            let w = hi - lo;
-            let rows = &self.mass[start..start + 3 * w];
-            let y: [f64; 3] = std::array::from_fn(|a| {
-                rows[a * w..(a + 1) * w].iter().zip(&r[lo..hi]).fold(0.0, |s, (m, x)| s + m * x)
-            });
-            *q = (0..3).map(|a| r[3 * slot + a] * y[a]).sum::<f64>();
+            *q = (0..3).map(|a| r[3 * slot + a] * mx[3 * slot + a]).sum::<f64>();
         });
         self.slot_of.iter().map(|&slot| share[slot as usize]).sum()
+    }
+}
+
+/// `y = B x` for the block `B` stored column by column from the front of
+/// `block` (`len(x)` columns of `len(x)`), each row's sum starting from
+/// `zero` (the sign of an all-zero sum) and adding its terms in column order.
+/// The rows' sums advance together, a column at a time, so they vectorize
+/// and overlap; each is the same, bit for bit, as its row summed alone.
+#[inline(always)]
+fn block_times(block: &[f64], x: &[f64], y: &mut [f64], zero: f64) {
+    let n = x.len();
+    y.fill(zero);
+    for (column, &xj) in block[..n * n].chunks_exact(n).zip(x) {
+        for (yi, &m) in y.iter_mut().zip(column) {
+            *yi += m * xj;
+        }
     }
 }

@@ -22,6 +22,8 @@ struct Block {
     mass: BlockMass,
     /// One value per node (the quadratic forms' shares, in slot order).
     per_node: Vec<f64>,
+    /// `M x` of the quadratic forms, in slot order.
+    slot_mx: Vec<f64>,
     /// The unbalanced force and the acceleration, per component in
     /// cluster-slot order (the force's also the quadratic forms' `x`).
     slot_force: Vec<f64>,
@@ -35,8 +37,13 @@ impl Inertia {
 
     pub fn block(mass: Vec<f64>, block: BlockMass) -> Self {
         let n = mass.len();
-        let block =
-            Block { mass: block, per_node: vec![0.0; n], slot_force: vec![0.0; 3 * n], slot_acc: vec![0.0; 3 * n] };
+        let block = Block {
+            mass: block,
+            per_node: vec![0.0; n],
+            slot_mx: vec![0.0; 3 * n],
+            slot_force: vec![0.0; 3 * n],
+            slot_acc: vec![0.0; 3 * n],
+        };
         Self { lumped: mass, block: Some(block) }
     }
 
@@ -58,7 +65,7 @@ impl Inertia {
     /// `x . M x`.
     pub fn quadratic(&mut self, x: &[f64]) -> f64 {
         match &mut self.block {
-            Some(b) => b.mass.quadratic(x, &mut b.slot_force, &mut b.per_node),
+            Some(b) => b.mass.quadratic(x, &mut b.slot_force, &mut b.slot_mx, &mut b.per_node),
             None => (0..x.len()).map(|k| self.lumped[k / 3] * x[k] * x[k]).sum(),
         }
     }
