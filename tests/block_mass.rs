@@ -32,7 +32,11 @@ fn lambda_max(model: &Model, block: &BlockMass, iterations: usize) -> f64 {
         solver.internal_forces(model, &mut state);
         let kx = &state.f_int;
         lambda = dot(&x, kx) / block.quadratic(&x, &mut scratch, &mut mx, &mut per_node);
-        block.accelerations(|k| if free(k) { kx[k] } else { 0.0 }, &mut slot_force, &mut slot_acc);
+        block.accelerations(
+            |i| std::array::from_fn(|d| if free(3 * i + d) { kx[3 * i + d] } else { 0.0 }),
+            &mut slot_force,
+            &mut slot_acc,
+        );
         let y: Vec<f64> = (0..model.n_nodes()).flat_map(|i| block.acceleration(&slot_acc, i)).collect();
         let norm = dot(&y, &y).sqrt();
         x = y.iter().map(|v| v / norm).collect();

@@ -174,17 +174,14 @@ impl BlockMass {
     }
 
     /// All accelerations `M^-1 f` in two parallel passes, for the update:
-    /// `f` is gathered once into `r` in slot order (each cluster's copies
+    /// `f` (of a model node) is gathered once into `r` in slot order (each cluster's copies
     /// contiguous), then each cluster's block of `M^-1` multiplies its part
     /// of `r` into its part of `acc` (slot order; read it with
     /// [`Self::acceleration`]). Each output has one writer and each sum a
     /// fixed order: the result does not depend on the thread count.
-    pub fn accelerations(&self, f: impl Fn(usize) -> f64 + Sync, r: &mut [f64], acc: &mut [f64]) {
+    pub fn accelerations(&self, f: impl Fn(usize) -> [f64; 3] + Sync, r: &mut [f64], acc: &mut [f64]) {
         r.par_chunks_mut(3).with_min_len(512).enumerate().for_each(|(slot, r)| {
-            let i = self.nodes[slot] as usize;
-            for (d, r) in r.iter_mut().enumerate() {
-                *r = f(3 * i + d);
-            }
+            r.copy_from_slice(&f(self.nodes[slot] as usize));
         });
         let r = &*r;
         self.per_cluster(acc).into_par_iter().with_min_len(128).enumerate().for_each(|(c, y)| {

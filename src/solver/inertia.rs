@@ -74,7 +74,7 @@ impl Inertia {
     /// - f_dash)` in two parallel passes; lumped: nothing, the update divides).
     pub fn prepare(&mut self, fixed: &[bool], f_ext: &[f64], f_int: &[f64], f_dash: Option<&[f64]>) {
         if let Some(b) = &mut self.block {
-            let f = |k| integrate::driving(fixed, f_ext, f_int, f_dash, k);
+            let f = |i| integrate::driving_node(fixed, f_ext, f_int, f_dash, i);
             b.mass.accelerations(f, &mut b.slot_force, &mut b.slot_acc);
         }
     }

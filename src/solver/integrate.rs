@@ -67,6 +67,20 @@ pub fn unbalanced(fixed: &[bool], f_ext: &[f64], f_int: &[f64], k: usize) -> f64
     }
 }
 
+/// [`driving`] of node `i`'s three components.
+#[inline]
+pub fn driving_node(fixed: &[bool], f_ext: &[f64], f_int: &[f64], f_dash: Option<&[f64]>, i: usize) -> [f64; 3] {
+    let k = 3 * i;
+    let (fixed, f_ext, f_int) = (&fixed[k..k + 3], &f_ext[k..k + 3], &f_int[k..k + 3]);
+    match f_dash {
+        Some(d) => {
+            let d = &d[k..k + 3];
+            std::array::from_fn(|a| if fixed[a] { 0.0 } else { f_ext[a] - f_int[a] - d[a] })
+        }
+        None => std::array::from_fn(|a| if fixed[a] { 0.0 } else { f_ext[a] - f_int[a] }),
+    }
+}
+
 /// Components per parallel chunk of the update (a multiple of 3).
 pub const CHUNK: usize = 3 * 1024;
 
@@ -91,32 +105,32 @@ pub fn integrate(inp: &UpdateInput, u: &mut [f64], v: &mut [f64], partial: &mut 
 fn integrate_range(inp: &UpdateInput, first: usize, u: &mut [f64], v: &mut [f64]) -> UpdateReport {
     let mut rep = UpdateReport::default();
     let dt = inp.dt;
-    let unbalanced = |k: usize| unbalanced(inp.fixed, inp.f_ext, inp.f_int, k);
-    let driving = |k: usize| driving(inp.fixed, inp.f_ext, inp.f_int, inp.f_dash, k);
+    let h = 0.5 * inp.c * dt;
     for (j, (u, v)) in u.chunks_exact_mut(3).zip(v.chunks_exact_mut(3)).enumerate() {
         let i = first / 3 + j;
+        let k = 3 * i;
+        let (fixed, f_ext, f_int) = (&inp.fixed[k..k + 3], &inp.f_ext[k..k + 3], &inp.f_int[k..k + 3]);
         // Per component: the mass and the velocity change `dt M^-1 f`.
         let (m, dv) = match inp.mass {
-            Masses::Lumped(m) => ([m[i]; 3], [0, 1, 2].map(|d| dt * driving(3 * i + d) / m[i])),
+            Masses::Lumped(m) => {
+                let f = driving_node(inp.fixed, inp.f_ext, inp.f_int, inp.f_dash, i);
+                ([m[i]; 3], f.map(|f| dt * f / m[i]))
+            }
             Masses::Block(b, acc) => (b.diagonal[i], b.acceleration(acc, i).map(|a| dt * a)),
         };
         for d in 0..3 {
-            let k = 3 * i + d;
-            if inp.fixed[k] {
+            if fixed[d] {
                 v[d] = 0.0;
                 continue;
             }
-            let f = unbalanced(k);
+            let f = f_ext[d] - f_int[d];
             rep.max_unbalanced = rep.max_unbalanced.max(f.abs());
             v[d] = match inp.damping {
                 DampingKind::Local => {
-                    let f = driving(k);
+                    let f = driving(inp.fixed, inp.f_ext, inp.f_int, inp.f_dash, k + d);
                     v[d] + dt * (f - local_damping(inp.alpha, f, v[d])) / m[d]
                 }
-                DampingKind::Viscous => {
-                    let h = 0.5 * inp.c * dt;
-                    ((1.0 - h) * v[d] + dv[d]) / (1.0 + h)
-                }
+                DampingKind::Viscous => ((1.0 - h) * v[d] + dv[d]) / (1.0 + h),
                 DampingKind::Kinetic => v[d] + dv[d],
             };
             u[d] += dt * v[d];

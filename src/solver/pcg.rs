@@ -90,7 +90,11 @@ impl Pcg {
 
     /// `z = S r + P A_c^-1 P^T r` (`r` zero on fixed components, so is `z`).
     fn precondition(&mut self, r: &[f64], z: &mut [f64]) {
-        self.smoother.accelerations(|k| r[k], &mut self.slot_force, &mut self.slot_acc);
+        self.smoother.accelerations(
+            |i| [r[3 * i], r[3 * i + 1], r[3 * i + 2]],
+            &mut self.slot_force,
+            &mut self.slot_acc,
+        );
         let (s, acc) = (&self.smoother, &self.slot_acc);
         z.par_chunks_mut(3).with_min_len(512).enumerate().for_each(|(i, z)| z.copy_from_slice(&s.acceleration(acc, i)));
         self.coarse.add_correction(r, z);
