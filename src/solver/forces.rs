@@ -1,6 +1,7 @@
 //! Stage 1 of a step, the internal forces, in three parallel passes:
 //! 1. every element writes `K_e u_e` (eq. 12) into its own slot;
-//! 2. every spring writes its force on node `a` (eq. 15) into its own slot;
+//! 2. every spring writes its force on node `a` (eq. 15) into its own slot
+//!    (and, where the dashpots are on, its dashpot force into another);
 //! 3. every node gathers its contributions in the fixed order of
 //!    [`Gather`](crate::model::Gather).
 //!
@@ -238,53 +239,50 @@ pub fn spring_forces(model: &Model, state: &SpringState, u: &[f64], f_spring: &m
     });
 }
 
+/// The spring dashpots of a failure phase that has them
+/// ([`crate::solver::has_dashpots`]): each spring's damping force on its
+/// node `a` from the velocities `v` ([`spring_dashpot`] with `beta`) into
+/// its slot of `out`.
+pub struct Dashpots<'a> {
+    pub v: &'a [f64],
+    pub beta: f64,
+    pub out: &'a mut [[f64; 3]],
+}
+
 /// Failure phase: breakable springs (a strength in `joints`) take their
 /// force from the joint `law` (eq. 17-18) and update their own slip and
-/// status; the others stay elastic.
+/// status; the others stay elastic. With `dashpots`, their forces come from
+/// the same pass, which reads each spring once.
 pub fn spring_forces_with_failure(
     model: &Model,
     law: &impl JointLaw,
     joints: &JointState,
     state: &mut SpringState,
     u: &[f64],
+    dashpots: Option<Dashpots>,
     f_spring: &mut [[f64; 3]],
 ) {
     let sp = &model.springs;
-    f_spring
-        .par_iter_mut()
-        .zip(state.slip.par_iter_mut())
-        .zip(state.status.par_iter_mut())
-        .with_min_len(MIN_LEN)
-        .enumerate()
-        .for_each(|(s, ((f, slip), status))| {
-            let d = relative_displacement(u, sp.a[s] as usize, sp.b[s] as usize);
-            *f = match &joints.strength[s] {
-                Some(st) => law.force(&sp.get(s), d, st, slip, status),
-                None => spring_contact_force(sp.kn[s], sp.ks[s], sp.normal[s], d, *slip, *status),
-            };
-        });
-}
-
-/// The spring dashpots (a failure phase that has them,
-/// [`crate::solver::has_dashpots`]): each spring's
-/// damping force on its node `a` from the velocities `v`
-/// ([`crate::physics::damping::spring_dashpot`]).
-pub fn spring_dashpots(model: &Model, v: &[f64], beta: f64, f_dash: &mut [[f64; 3]]) {
-    let sp = &model.springs;
-    f_dash.par_iter_mut().with_min_len(MIN_LEN).enumerate().for_each(|(s, f)| {
-        let w = relative_displacement(v, sp.a[s] as usize, sp.b[s] as usize);
-        *f = spring_dashpot(beta, sp.kn[s], sp.ks[s], sp.normal[s], w);
-    });
-}
-
-/// Per node, the sum of its springs' forces `f_spring` (on node `a`, the
-/// opposite on node `b`), as [`gather`] adds them.
-pub fn gather_springs(model: &Model, f_spring: &[[f64; 3]], out: &mut [f64]) {
-    out.par_chunks_mut(3).with_min_len(MIN_LEN).enumerate().for_each(|(i, f)| {
-        let mut sum = [0.0; 3];
-        add_springs(model, f_spring, i, &mut sum);
-        f.copy_from_slice(&sum);
-    });
+    let force = |s: usize, slip: &mut _, status: &mut _| {
+        let d = relative_displacement(u, sp.a[s] as usize, sp.b[s] as usize);
+        match &joints.strength[s] {
+            Some(st) => law.force(&sp.get(s), d, st, slip, status),
+            None => spring_contact_force(sp.kn[s], sp.ks[s], sp.normal[s], d, *slip, *status),
+        }
+    };
+    let springs = f_spring.par_iter_mut().zip(state.slip.par_iter_mut()).zip(state.status.par_iter_mut());
+    match dashpots {
+        None => springs.with_min_len(MIN_LEN).enumerate().for_each(|(s, ((f, slip), status))| {
+            *f = force(s, slip, status);
+        }),
+        Some(Dashpots { v, beta, out }) => springs.zip(out.par_iter_mut()).with_min_len(MIN_LEN).enumerate().for_each(
+            |(s, (((f, slip), status), f_d))| {
+                *f = force(s, slip, status);
+                let w = relative_displacement(v, sp.a[s] as usize, sp.b[s] as usize);
+                *f_d = spring_dashpot(beta, sp.kn[s], sp.ks[s], sp.normal[s], w);
+            },
+        ),
+    }
 }
 
 /// Adds node `i`'s spring forces to `sum`, in its gather order.
@@ -300,17 +298,44 @@ fn add_springs(model: &Model, f_spring: &[[f64; 3]], i: usize, sum: &mut [f64; 3
     }
 }
 
-pub fn gather(model: &Model, f_elem: &[f64], f_spring: &[[f64; 3]], f_int: &mut [f64]) {
+/// Node `i`'s internal force: its element slots, then its springs.
+#[inline]
+fn node_force(model: &Model, f_elem: &[f64], f_spring: &[[f64; 3]], i: usize) -> [f64; 3] {
     let g = &model.gather;
-    f_int.par_chunks_mut(3).with_min_len(MIN_LEN).enumerate().for_each(|(i, f)| {
-        let mut sum = [0.0; 3];
-        for &slot in &g.elem_slot[g.elem_ptr[i] as usize..g.elem_ptr[i + 1] as usize] {
-            let slot = slot as usize;
-            for d in 0..3 {
-                sum[d] += f_elem[slot + d];
-            }
+    let mut sum = [0.0; 3];
+    for &slot in &g.elem_slot[g.elem_ptr[i] as usize..g.elem_ptr[i + 1] as usize] {
+        let slot = slot as usize;
+        for d in 0..3 {
+            sum[d] += f_elem[slot + d];
         }
-        add_springs(model, f_spring, i, &mut sum);
-        f.copy_from_slice(&sum);
+    }
+    add_springs(model, f_spring, i, &mut sum);
+    sum
+}
+
+pub fn gather(model: &Model, f_elem: &[f64], f_spring: &[[f64; 3]], f_int: &mut [f64]) {
+    f_int.par_chunks_mut(3).with_min_len(MIN_LEN).enumerate().for_each(|(i, f)| {
+        f.copy_from_slice(&node_force(model, f_elem, f_spring, i));
     });
+}
+
+/// [`gather`], and per node the sum of its springs' dashpot forces
+/// `f_dash_spring` into `f_dash` in the same order, in one pass over the
+/// nodes.
+pub fn gather_with_dashpots(
+    model: &Model,
+    f_elem: &[f64],
+    f_spring: &[[f64; 3]],
+    f_dash_spring: &[[f64; 3]],
+    f_int: &mut [f64],
+    f_dash: &mut [f64],
+) {
+    f_int.par_chunks_mut(3).zip(f_dash.par_chunks_mut(3)).with_min_len(MIN_LEN).enumerate().for_each(
+        |(i, (f, f_d))| {
+            f.copy_from_slice(&node_force(model, f_elem, f_spring, i));
+            let mut sum = [0.0; 3];
+            add_springs(model, f_dash_spring, i, &mut sum);
+            f_d.copy_from_slice(&sum);
+        },
+    );
 }

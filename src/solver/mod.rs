@@ -1,10 +1,10 @@
 //! Explicit dynamic relaxation (paper section 3.4, eq. 8 and 14).
 //!
 //! One step is a short list of named stages:
-//! 1. internal forces: elements (eq. 12) and springs (eq. 15);
-//! 2. update: damping (eq. 13: the spring dashpots where they are on, then
-//!    the viscous or local damping) and explicit integration (eq. 14) with
-//!    fixities;
+//! 1. internal forces: elements (eq. 12) and springs (eq. 15), and the
+//!    spring dashpots' forces where they are on (from the same passes);
+//! 2. update: damping (eq. 13: the dashpots' forces, then the viscous or
+//!    local damping) and explicit integration (eq. 14) with fixities;
 //! 3. monitor: convergence ratio, energies, non-finite state and blow-up.
 //!
 //! [`relax`](relax::relax) steps until a stop rule fires; it is the one loop
@@ -243,32 +243,51 @@ impl Solver {
     }
 
     /// Stage 1: internal forces, eq. 12 (elements) and eq. 15 (springs),
-    /// gathered per node (see [`forces`]).
+    /// gathered per node (see [`forces`]); where the spring dashpots are on
+    /// (stage 2a), their forces from the half-step velocities into `f_dash`
+    /// too, from the same passes over the springs and the nodes.
     pub fn internal_forces(&mut self, model: &Model, state: &mut State) {
         match self.plastic {
             true => forces::element_forces_plastic(model, &mut state.rock, &state.u, &mut self.f_elem),
             false => forces::element_forces(model, &state.u, &mut self.f_elem),
         }
+        let dashpots = self.dashpot_beta > 0.0;
         if self.failure {
             let law = &CoulombJoint;
+            let dash = dashpots.then_some(forces::Dashpots {
+                v: &state.v,
+                beta: self.dashpot_beta,
+                out: &mut self.f_dash_spring,
+            });
             forces::spring_forces_with_failure(
                 model,
                 law,
                 &state.joints,
                 &mut state.springs,
                 &state.u,
+                dash,
                 &mut self.f_spring,
             );
         } else {
             forces::spring_forces(model, &state.springs, &state.u, &mut self.f_spring);
         }
-        forces::gather(model, &self.f_elem, &self.f_spring, &mut state.f_int);
+        match dashpots {
+            true => forces::gather_with_dashpots(
+                model,
+                &self.f_elem,
+                &self.f_spring,
+                &self.f_dash_spring,
+                &mut state.f_int,
+                &mut self.f_dash,
+            ),
+            false => forces::gather(model, &self.f_elem, &self.f_spring, &mut state.f_int),
+        }
     }
 
     /// One step. Returns `(max unbalanced force, kinetic energy)`.
     pub fn step(&mut self, model: &Model, state: &mut State) -> Result<(f64, f64), SolveError> {
         self.internal_forces(model, state);
-        let dashpots = self.dashpots(model, state);
+        let dashpots = self.dashpot_beta > 0.0;
         self.update_damping(state);
         let f_dash = dashpots.then_some(&self.f_dash[..]);
         self.inertia.prepare(&model.fixed, &model.f_ext, &state.f_int, f_dash);
@@ -295,17 +314,6 @@ impl Solver {
         }
         self.monitor(model, state, kinetic)?;
         Ok((rep.max_unbalanced, kinetic))
-    }
-
-    /// Stage 2a: the spring dashpots' forces per component from the
-    /// half-step velocities, into `f_dash`; false if they are off.
-    fn dashpots(&mut self, model: &Model, state: &State) -> bool {
-        if self.dashpot_beta <= 0.0 {
-            return false;
-        }
-        forces::spring_dashpots(model, &state.v, self.dashpot_beta, &mut self.f_dash_spring);
-        forces::gather_springs(model, &self.f_dash_spring, &mut self.f_dash);
-        true
     }
 
     /// Adaptive viscous damping: `c = 2 omega`, refreshed every 10 steps.
