@@ -101,3 +101,36 @@ fn block_mass_with_local_damping_is_a_scene_error() {
     let err = Scene::from_toml(&text, dir, &dir.join("slope.toml")).unwrap_err();
     assert!(err.to_string().contains("solver.block_mass"), "{err}");
 }
+
+/// A mesh node that no cell uses (a gmsh file may keep one, say a geometry
+/// point) is a cluster without copies. The block masses skip it: the column
+/// with its node 0 moved to a new index, leaving index 0 unused, gives every
+/// node the same acceleration, bit for bit, as the column itself.
+#[test]
+fn a_mesh_node_no_cell_uses_changes_no_acceleration() {
+    let s = scene("verification/cases/column/column.toml");
+    let reference = build_model(&s).unwrap();
+    let mut mesh = cdem::drivers::read_mesh(&s).unwrap();
+    let moved = mesh.nodes.len();
+    mesh.nodes.push(mesh.nodes[0]);
+    mesh.node_tags.push(mesh.node_tags.iter().max().unwrap() + 1);
+    let remap = |n: &mut usize| {
+        if *n == 0 {
+            *n = moved;
+        }
+    };
+    mesh.cells.iter_mut().for_each(|c| c.nodes.iter_mut().for_each(remap));
+    mesh.groups.iter_mut().flat_map(|g| g.facets.iter_mut()).for_each(|f| f.nodes.iter_mut().for_each(remap));
+    let model = cdem::model::build(&mesh, &s.model_spec()).unwrap();
+    assert_eq!(model.n_nodes(), reference.n_nodes());
+    assert!(!model.mesh_node.contains(&0), "index 0 is unused");
+    let n = 3 * model.n_nodes();
+    let f: Vec<f64> = (0..n).map(|k| (0.37 * k as f64).sin()).collect();
+    let accelerations = |model: &Model| {
+        let block = BlockMass::new(model, 1.0).unwrap();
+        let (mut r, mut acc) = (vec![0.0; n], vec![0.0; n]);
+        block.accelerations(|i| [f[3 * i], f[3 * i + 1], f[3 * i + 2]], &mut r, &mut acc);
+        (0..model.n_nodes()).flat_map(|i| block.acceleration(&acc, i)).map(f64::to_bits).collect::<Vec<_>>()
+    };
+    assert_eq!(accelerations(&model), accelerations(&reference));
+}

@@ -174,11 +174,12 @@ impl BlockMass {
     }
 
     /// All accelerations `M^-1 f` in two parallel passes, for the update:
-    /// `f` (of a model node) is gathered once into `r` in slot order (each cluster's copies
-    /// contiguous), then each cluster's block of `M^-1` multiplies its part
-    /// of `r` into its part of `acc` (slot order; read it with
-    /// [`Self::acceleration`]). Each output has one writer and each sum a
-    /// fixed order: the result does not depend on the thread count.
+    /// `f` (a model node's three components) is gathered once into `r` in
+    /// slot order (each cluster's copies contiguous), then each cluster's
+    /// block of `M^-1` multiplies its part of `r` into its part of `acc`
+    /// (slot order; read it with [`Self::acceleration`]). Each output has one
+    /// writer and each sum a fixed order: the result does not depend on the
+    /// thread count.
     pub fn accelerations(&self, f: impl Fn(usize) -> [f64; 3] + Sync, r: &mut [f64], acc: &mut [f64]) {
         r.par_chunks_mut(3).with_min_len(512).enumerate().for_each(|(slot, r)| {
             r.copy_from_slice(&f(self.nodes[slot] as usize));
@@ -246,6 +247,9 @@ impl BlockMass {
 fn block_times(block: &[f64], x: &[f64], y: &mut [f64], zero: f64) {
     let n = x.len();
     y.fill(zero);
+    if n == 0 {
+        return; // a mesh node no element uses
+    }
     for (column, &xj) in block[..n * n].chunks_exact(n).zip(x) {
         for (yi, &m) in y.iter_mut().zip(column) {
             *yi += m * xj;

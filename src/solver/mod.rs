@@ -243,9 +243,9 @@ impl Solver {
     }
 
     /// Stage 1: internal forces, eq. 12 (elements) and eq. 15 (springs),
-    /// gathered per node (see [`forces`]); where the spring dashpots are on
-    /// (stage 2a), their forces from the half-step velocities into `f_dash`
-    /// too, from the same passes over the springs and the nodes.
+    /// gathered per node (see [`forces`]); where the spring dashpots are on,
+    /// their forces from the half-step velocities into `f_dash` too, from the
+    /// same passes over the springs and the nodes.
     pub fn internal_forces(&mut self, model: &Model, state: &mut State) {
         match self.plastic {
             true => forces::element_forces_plastic(model, &mut state.rock, &state.u, &mut self.f_elem),
