@@ -47,27 +47,8 @@ pub struct UpdateInput<'a> {
     pub f_dash: Option<&'a [f64]>,
 }
 
-/// The force that accelerates component `k`: the unbalanced force less the
-/// dashpots' (0 if fixed).
-#[inline]
-pub fn driving(fixed: &[bool], f_ext: &[f64], f_int: &[f64], f_dash: Option<&[f64]>, k: usize) -> f64 {
-    match f_dash {
-        Some(d) if !fixed[k] => f_ext[k] - f_int[k] - d[k],
-        _ => unbalanced(fixed, f_ext, f_int, k),
-    }
-}
-
-/// The unbalanced force `f_ext - f_int` on component `k`, 0 if it is fixed.
-#[inline]
-pub fn unbalanced(fixed: &[bool], f_ext: &[f64], f_int: &[f64], k: usize) -> f64 {
-    if fixed[k] {
-        0.0
-    } else {
-        f_ext[k] - f_int[k]
-    }
-}
-
-/// [`driving`] of node `i`'s three components.
+/// The forces that accelerate node `i`'s three components: the unbalanced
+/// force `f_ext - f_int` less the dashpots' (0 where a component is fixed).
 #[inline]
 pub fn driving_node(fixed: &[bool], f_ext: &[f64], f_int: &[f64], f_dash: Option<&[f64]>, i: usize) -> [f64; 3] {
     let k = 3 * i;
@@ -127,7 +108,7 @@ fn integrate_range(inp: &UpdateInput, first: usize, u: &mut [f64], v: &mut [f64]
             rep.max_unbalanced = rep.max_unbalanced.max(f.abs());
             v[d] = match inp.damping {
                 DampingKind::Local => {
-                    let f = driving(inp.fixed, inp.f_ext, inp.f_int, inp.f_dash, k + d);
+                    let f = driving_node(inp.fixed, inp.f_ext, inp.f_int, inp.f_dash, i)[d];
                     v[d] + dt * (f - local_damping(inp.alpha, f, v[d])) / m[d]
                 }
                 DampingKind::Viscous => ((1.0 - h) * v[d] + dv[d]) / (1.0 + h),

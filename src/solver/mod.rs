@@ -231,10 +231,15 @@ impl Solver {
         self.failure = on && model.has_breakable_interface();
         self.plastic = on && model.has_plastic_blocks();
         self.dashpot_beta = if on && has_dashpots(model) { dashpot_beta(self.params.safety, self.dt) } else { 0.0 };
-        if self.dashpot_beta > 0.0 && self.f_dash.is_empty() {
+        if self.dashpots_on() && self.f_dash.is_empty() {
             self.f_dash_spring = vec![[0.0; 3]; model.springs.len()];
             self.f_dash = vec![0.0; 3 * model.n_nodes()];
         }
+    }
+
+    /// Whether the spring dashpots are on (see [`Self::set_failure`]).
+    fn dashpots_on(&self) -> bool {
+        self.dashpot_beta > 0.0
     }
 
     /// Kinetic energy `v . M v / 2` with the inertial masses (J).
@@ -251,7 +256,7 @@ impl Solver {
             true => forces::element_forces_plastic(model, &mut state.rock, &state.u, &mut self.f_elem),
             false => forces::element_forces(model, &state.u, &mut self.f_elem),
         }
-        let dashpots = self.dashpot_beta > 0.0;
+        let dashpots = self.dashpots_on();
         if self.failure {
             let law = &CoulombJoint;
             let dash = dashpots.then_some(forces::Dashpots {
@@ -287,7 +292,7 @@ impl Solver {
     /// One step. Returns `(max unbalanced force, kinetic energy)`.
     pub fn step(&mut self, model: &Model, state: &mut State) -> Result<(f64, f64), SolveError> {
         self.internal_forces(model, state);
-        let dashpots = self.dashpot_beta > 0.0;
+        let dashpots = self.dashpots_on();
         self.update_damping(state);
         let f_dash = dashpots.then_some(&self.f_dash[..]);
         self.inertia.prepare(&model.fixed, &model.f_ext, &state.f_int, f_dash);
