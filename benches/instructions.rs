@@ -43,6 +43,9 @@ use gungraun::{library_benchmark, library_benchmark_group, main, LibraryBenchmar
 /// rayon's global pool on the calling thread (one thread): the work of a
 /// parallel loop is then counted in the benchmark's own thread.
 fn one_thread() {
+    // The baseline kernels (SSE2), so that a count does not depend on whether
+    // the measuring CPU has AVX2 (`cdem::simd`; both give the same bits).
+    cdem::simd::set_baseline(true);
     let _ = rayon::ThreadPoolBuilder::new().num_threads(1).use_current_thread().build_global();
 }
 

@@ -32,6 +32,7 @@
 //   (feature `plot`: one function per product command) -> harness (feature
 //   `harness`: verification only) -> the CLI.
 pub mod error;
+pub mod simd;
 pub mod summary;
 
 pub mod geometry;

@@ -3,7 +3,7 @@
 //!
 //! | layer | modules |
 //! |---|---|
-//! | 0 | `error`, `summary` (vocabulary every layer shares) |
+//! | 0 | `error`, `summary` (vocabulary every layer shares), `simd` (the kernels' instruction set) |
 //! | 1 | `mesh`, `geometry` (the one circle type) |
 //! | 2 | `physics` |
 //! | 3 | `model` |
@@ -23,8 +23,9 @@
 
 use std::path::{Path, PathBuf};
 
-const LAYERS: [(&str, u32); 15] = [
+const LAYERS: [(&str, u32); 16] = [
     ("error", 0),
+    ("simd", 0),
     ("summary", 0),
     ("mesh", 1),
     ("geometry", 1),

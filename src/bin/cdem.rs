@@ -290,6 +290,11 @@ enum Outcome {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    // A value of CDEM_SIMD the kernels would not understand is an input error.
+    if let Err(e) = cdem::simd::baseline_from_env() {
+        eprintln!("error: {e}");
+        return ExitCode::from(2);
+    }
     // The command runs on a worker of rayon's pool, not on this thread: a
     // parallel pass started from outside the pool hands its work over and
     // sleeps on a latch each time, thousands of times a second in a

@@ -1116,6 +1116,7 @@ pub const ROWS: &[RowSpec] = &[
     spec("perf/bandwidth", "performance: paper slope step", "bandwidth / stream triad (goal >= 0.5)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/element-bytes", "performance: paper slope element pass", "bytes per element-step (goal <= 0.6 x 4992 B of the full K_e)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/plastic-over-condensed", "performance: paper slope element pass, plastic blocks", "plastic / condensed element pass time, every tetrahedron elastic, behind the elastic screen (goal <= 2)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
+    spec("perf/avx2-speedup", "performance: paper slope element pass, plastic blocks yielding", "baseline (SSE2) / AVX2 kernels, the same bits, alternating batches (goal >= 1)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/dr-over-fem", "performance: paper slope", "DR to 1e-5 / FEM solve time (goal <= 3)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/pcg-over-fem", "performance: paper slope", "PCG to 1e-5 / FEM solve time (goal <= 3)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/lem/paper_slope", "performance: LEM grid, paper_slope", "pySlope / ours time (goal >= 300)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),

@@ -219,8 +219,15 @@ pub fn unpack_symmetric(k: &[f64], m: usize) -> [f64; 576] {
 /// Each stored block is read once and used twice: `f_c += K_cd u_d` and
 /// `f_d += K_cd^T u_c`. The sums run in a fixed order (corner by corner),
 /// so the force does not depend on the thread that computes it.
+/// Runs with AVX2 where the CPU has it ([`crate::simd`]; the same bits).
 #[inline]
 pub fn element_force(k: &[f64], nodes: &[u32], u: &[f64], f_e: &mut [f64]) {
+    crate::simd::avx2!(element_force_with(k, nodes, u, f_e))
+}
+
+/// [`element_force`]'s body.
+#[inline(always)]
+fn element_force_with(k: &[f64], nodes: &[u32], u: &[f64], f_e: &mut [f64]) {
     let m = nodes.len();
     let mut u_e = [[0.0; 3]; 8];
     for (c, &node) in nodes.iter().enumerate() {

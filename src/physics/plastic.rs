@@ -273,8 +273,42 @@ pub fn add_pressure_force(grad: &[[f64; 3]], pressure: f64, f_e: &mut [f64]) {
 /// cell with a [`Screen`], empty for none: if every tetrahedron is elastic
 /// after the pass, [`CellStep::radius`] is then the screen's radius from
 /// the stresses the pass already has (what [`screen_radius`] computes anew).
+/// Runs with AVX2 where the CPU has it ([`crate::simd`]; the same bits).
 #[allow(clippy::too_many_arguments)]
 pub fn plastic_element_force(
+    topo: &TetTopology,
+    tets: &[TetB],
+    grad: &[[f64; 3]],
+    lame: Lame,
+    surface: &MohrCoulomb,
+    nodes: &[u32],
+    u: &[f64],
+    volumetric: Volumetric,
+    pore: f64,
+    sensitivity: &[f64],
+    hist: &mut [TetPlastic],
+    f_e: &mut [f64],
+) -> CellStep {
+    crate::simd::avx2!(plastic_cell(
+        topo,
+        tets,
+        grad,
+        lame,
+        surface,
+        nodes,
+        u,
+        volumetric,
+        pore,
+        sensitivity,
+        hist,
+        f_e
+    ))
+}
+
+/// [`plastic_element_force`]'s body.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn plastic_cell(
     topo: &TetTopology,
     tets: &[TetB],
     grad: &[[f64; 3]],

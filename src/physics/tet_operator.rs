@@ -136,7 +136,7 @@ pub fn tet_element_force(topo: &TetTopology, b: &[[f64; 9]], lame: Lame, nodes: 
 
 /// Step 1: the displacements of a cell's decomposition points relative to
 /// its base point, `d_p = (T u)_p - u_r` (so `d[base]` is zero).
-#[inline]
+#[inline(always)]
 pub fn point_displacements(topo: &TetTopology, nodes: &[u32], u: &[f64]) -> [[f64; 3]; MAX_POINTS] {
     let n = topo.n_corners;
     let mut d = [[0.0; 3]; MAX_POINTS];
@@ -168,7 +168,7 @@ pub fn point_displacements(topo: &TetTopology, nodes: &[u32], u: &[f64]) -> [[f6
 /// written to `f_e` (`3n` values, corner-major). The base point takes minus
 /// the sum of the others: each tetrahedron's forces sum to zero and its own
 /// gradient was never stored.
-#[inline]
+#[inline(always)]
 pub fn corner_forces(topo: &TetTopology, f: &mut [[f64; 3]; MAX_POINTS], f_e: &mut [f64]) {
     let n = topo.n_corners;
     let n_points = if topo.has_body_point() { topo.base + 1 } else { n };

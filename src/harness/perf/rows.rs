@@ -14,6 +14,8 @@ pub const GOAL_LEM_OVER_PYSLOPE: f64 = 300.0;
 /// A plastic block's element step at most this many times the condensed
 /// elastic one (issue 24, item 7).
 pub const GOAL_PLASTIC_OVER_CONDENSED: f64 = 2.0;
+/// The kernels' AVX2 version no slower than their baseline (`crate::simd`).
+pub const GOAL_AVX2_SPEEDUP: f64 = 1.0;
 /// Bytes per element-step at most this fraction of the full-`K_e` count (issue 28, item 2).
 pub const GOAL_ELEMENT_BYTES_FRACTION: f64 = 0.6;
 
@@ -46,6 +48,14 @@ pub fn perf_rows(h: &Headline) -> Vec<Check> {
                 1e3 * h.plastic_pass.condensed_s,
                 1e3 * h.plastic_pass.strains_s,
                 h.plastic_pass.strains_ratio()
+            )),
+        row("perf/avx2-speedup")
+            .value(h.plastic_pass.avx2_speedup(), GOAL_AVX2_SPEEDUP, h.plastic_pass.yielding_avx2_s)
+            .with_note(format!(
+                "plastic pass, every tetrahedron yielding: {:.3} ms with the baseline kernels, {:.3} ms with AVX2{}",
+                1e3 * h.plastic_pass.yielding_baseline_s,
+                1e3 * h.plastic_pass.yielding_avx2_s,
+                if h.plastic_pass.avx2_cpu { "" } else { " (this CPU has no AVX2: both ran the baseline)" }
             )),
         row("perf/dr-over-fem").value(h.dr_over_fem(), 3.0, h.dr_block.seconds),
         row("perf/pcg-over-fem").value(h.pcg_over_fem(), 3.0, h.pcg.seconds),

@@ -124,9 +124,20 @@ pub struct PlasticPassFigure {
     /// yielding block cannot be cheaper than `strains_s` plus the forces'
     /// pass back to the corners (about as many operations).
     pub strains_s: f64,
+    /// The yielding pass with the kernels' AVX2 and baseline (SSE2)
+    /// versions ([`crate::simd`]), timed in alternating batches (medians of
+    /// 5 each); `avx2_cpu` whether this CPU has AVX2 (without it both run
+    /// the baseline).
+    pub yielding_avx2_s: f64,
+    pub yielding_baseline_s: f64,
+    pub avx2_cpu: bool,
 }
 
 impl PlasticPassFigure {
+    /// The yielding pass's baseline time over its AVX2 time.
+    pub fn avx2_speedup(&self) -> f64 {
+        self.yielding_baseline_s / self.yielding_avx2_s
+    }
     pub fn screened_ratio(&self) -> f64 {
         self.screened_s / self.condensed_s
     }
@@ -155,6 +166,25 @@ fn median_pass(passes: usize, mut pass: impl FnMut()) -> f64 {
         })
         .collect();
     median(&mut batches)
+}
+
+/// `pass(false)` and `pass(true)` in alternating batches of `passes / 5`
+/// calls each: the median of each's 5 batches (s per call).
+fn median_alternating(passes: usize, mut pass: impl FnMut(bool)) -> (f64, f64) {
+    let per_batch = passes.div_ceil(5).max(1);
+    let mut batch = |which: bool| {
+        let t = Instant::now();
+        for _ in 0..per_batch {
+            pass(which);
+        }
+        t.elapsed().as_secs_f64() / per_batch as f64
+    };
+    let (mut first, mut second) = (Vec::with_capacity(5), Vec::with_capacity(5));
+    for _ in 0..5 {
+        first.push(batch(false));
+        second.push(batch(true));
+    }
+    (median(&mut first), median(&mut second))
 }
 
 /// Times the element passes of [`PlasticPassFigure`]: `elastic` and
@@ -194,7 +224,27 @@ pub fn time_plastic_pass(elastic: &Model, plastic: &Model, passes: usize) -> Pla
             std::hint::black_box(strains_pass(plastic, std::hint::black_box(&u)));
         })
     };
-    PlasticPassFigure { condensed_s, screened_s, elastic_s, yielding_s, strains_s }
+    let (yielding_avx2_s, yielding_baseline_s) = {
+        let u = field(1e-3);
+        let mut rock = plastic.rock_state();
+        median_alternating(passes, |baseline| {
+            crate::simd::set_baseline(baseline);
+            rock.reset_history();
+            crate::solver::forces::element_forces_plastic(plastic, &mut rock, std::hint::black_box(&u), &mut f);
+        })
+    };
+    // Back to what the environment asks for.
+    crate::simd::set_baseline(crate::simd::baseline_from_env().unwrap_or(false));
+    PlasticPassFigure {
+        condensed_s,
+        screened_s,
+        elastic_s,
+        yielding_s,
+        strains_s,
+        yielding_avx2_s,
+        yielding_baseline_s,
+        avx2_cpu: crate::simd::cpu_has_avx2(),
+    }
 }
 
 /// The floor pass of [`PlasticPassFigure::strains_s`]: every plastic cell's

@@ -72,6 +72,7 @@ pub const DECLARED: &[(&str, &[&str])] = &[
     ("meshes/regenerated", &[]),
     ("perf/", &["verification/cases/slope/slope.toml"]),
     ("perf/plastic-over-condensed", &["verification/cases/slope/slope.toml", "verification/plastic/paper-slope/paper-slope.toml"]),
+    ("perf/avx2-speedup", &["verification/plastic/paper-slope/paper-slope.toml"]),
     ("perf/lem/", &["verification/lem/paper-slope-explicit.toml", "verification/lem/acads-1a.toml", "references/pyslope.json"]),
     ("perf/phase2/", &["verification/cases/slope-slip/slope-slip.toml"]),
     ("perf/srm/", &["verification/cases/slope-slip/slope-slip.toml"]),
