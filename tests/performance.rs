@@ -60,6 +60,7 @@ fn headline_figures_for_the_report() {
     let h = headline(Path::new("."), &scene, &model, &mut |_| {}).unwrap();
     assert!(h.dr_block.converged, "DR of the paper slope converges");
     assert!(h.pcg.converged, "PCG of the paper slope converges");
+    assert!(h.simd_step.same_bits, "the AVX2 and baseline kernels give the same phase-2 steps, bit for bit");
     println!("{}", h.markdown());
     let rows = cdem::harness::perf::rows::perf_rows(&h);
     for c in &rows {

@@ -13,8 +13,8 @@ use serde::Serialize;
 use super::pyslope::{pyslope_grid_search, pyslope_seconds, time_lem_grid, time_pyslope_grid, LEM_CASES};
 use super::stream::Triad;
 use super::timing::{
-    median, time_dr, time_element_pass, time_fem, time_pcg, time_plastic_pass, time_steps, time_steps_between,
-    DrFigure, ElementPassFigure, PcgFigure, PlasticPassFigure, StepFigure,
+    median, time_dr, time_element_pass, time_failure_steps_simd, time_fem, time_pcg, time_plastic_pass, time_steps,
+    time_steps_between, DrFigure, ElementPassFigure, PcgFigure, PlasticPassFigure, SimdStepFigure, StepFigure,
 };
 use crate::error::Error;
 use crate::model::Model;
@@ -35,6 +35,9 @@ pub struct Headline {
     /// The element pass with plastic blocks on the same mesh
     /// (`verification/plastic/paper-slope/paper-slope.toml`).
     pub plastic_pass: PlasticPassFigure,
+    /// A phase-2 step of that plastic scene with the kernels' AVX2 and
+    /// baseline versions (`crate::simd`), 300 steps from its elastic state.
+    pub simd_step: SimdStepFigure,
     pub dr_block: DrFigure,
     /// The elastic phase by two-level PCG.
     pub pcg: PcgFigure,
@@ -100,7 +103,10 @@ pub fn headline_with(
     let element_pass = time_element_pass(model, 2000);
     progress("paper slope: plastic element pass");
     let plastic_scene = Scene::load(&root.join(crate::harness::registry::PLASTIC_PAPER_SLOPE.input))?;
-    let plastic_pass = time_plastic_pass(model, &crate::drivers::build_model(&plastic_scene)?, 200);
+    let plastic_model = crate::drivers::build_model(&plastic_scene)?;
+    let plastic_pass = time_plastic_pass(model, &plastic_model, 200);
+    progress("paper slope: phase-2 steps with plastic blocks, AVX2 and baseline kernels");
+    let simd_step = time_failure_steps_simd(&plastic_model, &plastic_scene.solver, 300)?;
     progress("paper slope: dynamic relaxation");
     let dr_block = time_dr(model, &scene.solver)?;
     progress("paper slope: PCG");
@@ -133,6 +139,7 @@ pub fn headline_with(
         step_lumped,
         element_pass,
         plastic_pass,
+        simd_step,
         dr_block,
         pcg,
         fem_s,

@@ -75,6 +75,56 @@ pub fn time_steps_between(
     })
 }
 
+/// A phase-2 step of a model with plastic blocks with the kernels' AVX2
+/// and baseline (SSE2) versions ([`crate::simd`]).
+#[derive(Debug, Clone, Serialize)]
+pub struct SimdStepFigure {
+    /// Seconds per step, medians of 5 batches each.
+    pub avx2_s: f64,
+    pub baseline_s: f64,
+    /// Whether this CPU has AVX2 (without it both run the baseline).
+    pub avx2_cpu: bool,
+    /// Whether the two runs ended in the same displacement, bit for bit.
+    pub same_bits: bool,
+}
+
+impl SimdStepFigure {
+    /// Baseline time over AVX2 time.
+    pub fn speedup(&self) -> f64 {
+        self.baseline_s / self.avx2_s
+    }
+}
+
+/// Times `steps` phase-2 steps of `model` from its elastic state (failure
+/// on, the phase's node-block masses) twice, with the AVX2 kernels and with
+/// the baseline ones, in alternating batches on two copies of the same
+/// trajectory: the two give the same bits, so each pair of batches does the
+/// same work. Restores what the environment asks for afterwards.
+pub fn time_failure_steps_simd(model: &Model, params: &SolverParams, steps: usize) -> Result<SimdStepFigure, Error> {
+    let (elastic, _) = crate::drivers::run::relax_elastic(model, params, 1000)?;
+    let mut run = [false, true].map(|_| -> Result<(Solver, State), Error> {
+        let mut solver = Solver::with_masses(model, params.clone(), params.block_masses(true))?;
+        solver.set_failure(model, true);
+        Ok((solver, elastic.clone()))
+    });
+    let mut error = None;
+    let (avx2_s, baseline_s) = median_alternating(steps, |baseline| {
+        crate::simd::set_baseline(baseline);
+        if let Ok((solver, state)) = &mut run[baseline as usize] {
+            if let Err(e) = solver.step(model, state) {
+                error.get_or_insert(e);
+            }
+        }
+    });
+    crate::simd::set_baseline(crate::simd::baseline_from_env().unwrap_or(false));
+    if let Some(e) = error {
+        return Err(e.into());
+    }
+    let [a, b] = run;
+    let same_bits = a?.1.u == b?.1.u;
+    Ok(SimdStepFigure { avx2_s, baseline_s, avx2_cpu: crate::simd::cpu_has_avx2(), same_bits })
+}
+
 /// The median of `x` (the middle value; of an even count, the upper one).
 pub fn median(x: &mut [f64]) -> f64 {
     x.sort_by(f64::total_cmp);
