@@ -7,8 +7,8 @@
 //! the same bits: Rust never fuses a multiply and an add unless the code asks
 //! (`mul_add`, which the kernels do not call), and a vector lane does each
 //! element's IEEE operations in the order the scalar code does. So a result
-//! does not depend on the machine that computed it, and the environment
-//! variable [`ENV`]` = baseline` (or [`set_baseline`]) runs the baseline
+//! does not depend on the machine that computed it, and `CDEM_SIMD=baseline`
+//! (the environment variable [`ENV`]; or [`set_baseline`]) runs the baseline
 //! version on any machine: tests/simd.rs compares the two bit for bit, and
 //! `cdem perf` times them side by side (`perf/avx2-speedup`).
 //!

@@ -219,6 +219,7 @@ pub fn unpack_symmetric(k: &[f64], m: usize) -> [f64; 576] {
 /// Each stored block is read once and used twice: `f_c += K_cd u_d` and
 /// `f_d += K_cd^T u_c`. The sums run in a fixed order (corner by corner),
 /// so the force does not depend on the thread that computes it.
+///
 /// Runs with AVX2 where the CPU has it ([`crate::simd`]; the same bits).
 #[inline]
 pub fn element_force(k: &[f64], nodes: &[u32], u: &[f64], f_e: &mut [f64]) {

@@ -273,6 +273,7 @@ pub fn add_pressure_force(grad: &[[f64; 3]], pressure: f64, f_e: &mut [f64]) {
 /// cell with a [`Screen`], empty for none: if every tetrahedron is elastic
 /// after the pass, [`CellStep::radius`] is then the screen's radius from
 /// the stresses the pass already has (what [`screen_radius`] computes anew).
+///
 /// Runs with AVX2 where the CPU has it ([`crate::simd`]; the same bits).
 #[allow(clippy::too_many_arguments)]
 pub fn plastic_element_force(

@@ -243,6 +243,7 @@ impl BlockMass {
 /// `zero` (the sign of an all-zero sum) and adding its terms in column order.
 /// The rows' sums advance together, a column at a time, so they vectorize
 /// and overlap; each is the same, bit for bit, as its row summed alone.
+///
 /// Runs with AVX2 where the CPU has it ([`crate::simd`]; the same bits).
 #[inline(always)]
 fn block_times(block: &[f64], x: &[f64], y: &mut [f64], zero: f64) {
