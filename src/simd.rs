@@ -51,16 +51,23 @@ pub fn set_baseline(baseline: bool) {
     MODE.store(if avx2 { AVX2 } else { BASELINE }, Ordering::Relaxed);
 }
 
+/// Runs the kernels' version that [`ENV`] asks for (a value it rejects
+/// counts as `auto`): the start, and what `cdem perf` returns to after
+/// timing both.
+pub fn set_from_env() {
+    set_baseline(baseline_from_env().unwrap_or(false));
+}
+
 /// Whether the kernels run their AVX2 version: the CPU has it and neither
-/// [`ENV`] (read once; a value it rejects counts as `auto`) nor
-/// [`set_baseline`] asked for the baseline.
+/// [`ENV`] (read once, [`set_from_env`]) nor [`set_baseline`] asked for the
+/// baseline.
 #[inline]
 pub fn avx2_on() -> bool {
     match MODE.load(Ordering::Relaxed) {
         AVX2 => true,
         BASELINE => false,
         _ => {
-            set_baseline(baseline_from_env().unwrap_or(false));
+            set_from_env();
             MODE.load(Ordering::Relaxed) == AVX2
         }
     }
@@ -78,11 +85,12 @@ pub fn cpu_has_avx2() -> bool {
     }
 }
 
-/// Evaluates `$body` compiled with AVX2 when [`avx2_on`], else as compiled
-/// for the baseline (or on another architecture). The body's code is
-/// compiled with AVX2 where it is inlined into the AVX2 version: what it
-/// calls must be `#[inline(always)]` to profit (calls that are not inlined
-/// run their baseline version, with the same result).
+/// Evaluates `$body` (a kernel's whole body, as a block) compiled with AVX2
+/// when [`avx2_on`], else as compiled for the baseline (or on another
+/// architecture). What the body calls is compiled with AVX2 where it is
+/// inlined into the AVX2 version: it must be `#[inline(always)]` to profit
+/// (calls that are not inlined run their baseline version, with the same
+/// result).
 macro_rules! avx2 {
     ($body:expr) => {{
         #[cfg(target_arch = "x86_64")]

@@ -223,42 +223,38 @@ pub fn unpack_symmetric(k: &[f64], m: usize) -> [f64; 576] {
 /// Runs with AVX2 where the CPU has it ([`crate::simd`]; the same bits).
 #[inline]
 pub fn element_force(k: &[f64], nodes: &[u32], u: &[f64], f_e: &mut [f64]) {
-    crate::simd::avx2!(element_force_with(k, nodes, u, f_e))
-}
-
-/// [`element_force`]'s body.
-#[inline(always)]
-fn element_force_with(k: &[f64], nodes: &[u32], u: &[f64], f_e: &mut [f64]) {
-    let m = nodes.len();
-    let mut u_e = [[0.0; 3]; 8];
-    for (c, &node) in nodes.iter().enumerate() {
-        let b = 3 * node as usize;
-        u_e[c].copy_from_slice(&u[b..b + 3]);
-    }
-    let mut f = [[0.0; 3]; 8];
-    let mut at = 0;
-    for c in 0..m {
-        let s = &k[at..at + 6];
-        at += 6;
-        let uc = u_e[c];
-        f[c][0] += s[0] * uc[0] + s[1] * uc[1] + s[2] * uc[2];
-        f[c][1] += s[1] * uc[0] + s[3] * uc[1] + s[4] * uc[2];
-        f[c][2] += s[2] * uc[0] + s[4] * uc[1] + s[5] * uc[2];
-        for d in c + 1..m {
-            let b = &k[at..at + 9];
-            at += 9;
-            let ud = u_e[d];
-            for i in 0..3 {
-                f[c][i] += b[3 * i] * ud[0] + b[3 * i + 1] * ud[1] + b[3 * i + 2] * ud[2];
-            }
-            for j in 0..3 {
-                f[d][j] += b[j] * uc[0] + b[3 + j] * uc[1] + b[6 + j] * uc[2];
+    crate::simd::avx2!({
+        let m = nodes.len();
+        let mut u_e = [[0.0; 3]; 8];
+        for (c, &node) in nodes.iter().enumerate() {
+            let b = 3 * node as usize;
+            u_e[c].copy_from_slice(&u[b..b + 3]);
+        }
+        let mut f = [[0.0; 3]; 8];
+        let mut at = 0;
+        for c in 0..m {
+            let s = &k[at..at + 6];
+            at += 6;
+            let uc = u_e[c];
+            f[c][0] += s[0] * uc[0] + s[1] * uc[1] + s[2] * uc[2];
+            f[c][1] += s[1] * uc[0] + s[3] * uc[1] + s[4] * uc[2];
+            f[c][2] += s[2] * uc[0] + s[4] * uc[1] + s[5] * uc[2];
+            for d in c + 1..m {
+                let b = &k[at..at + 9];
+                at += 9;
+                let ud = u_e[d];
+                for i in 0..3 {
+                    f[c][i] += b[3 * i] * ud[0] + b[3 * i + 1] * ud[1] + b[3 * i + 2] * ud[2];
+                }
+                for j in 0..3 {
+                    f[d][j] += b[j] * uc[0] + b[3 + j] * uc[1] + b[6 + j] * uc[2];
+                }
             }
         }
-    }
-    for (slot, fc) in f_e.chunks_exact_mut(3).zip(&f[..m]) {
-        slot.copy_from_slice(fc);
-    }
+        for (slot, fc) in f_e.chunks_exact_mut(3).zip(&f[..m]) {
+            slot.copy_from_slice(fc);
+        }
+    })
 }
 
 /// Element stress (Pa, Voigt order xx yy zz yz xz xy) from its averaged

@@ -290,121 +290,90 @@ pub fn plastic_element_force(
     hist: &mut [TetPlastic],
     f_e: &mut [f64],
 ) -> CellStep {
-    crate::simd::avx2!(plastic_cell(
-        topo,
-        tets,
-        grad,
-        lame,
-        surface,
-        nodes,
-        u,
-        volumetric,
-        pore,
-        sensitivity,
-        hist,
-        f_e
-    ))
-}
+    crate::simd::avx2!({
+        let d = point_displacements(topo, nodes, u);
+        let mut eps = [[0.0; 6]; MAX_TETS];
+        let own = tet_strains_into(topo, tets, &d, &mut eps);
+        let e = volumetric.value(own);
+        let shift = volumetric.shift(tets, &eps);
+        let mut f = [[0.0; 3]; MAX_POINTS];
+        let (mut pressure, mut volume) = (0.0, 0.0); // sum_t V_t p_t, sum_t V_t
+        let mut dev = [0.0; 6]; // sum_t V_t dev(sigma_t)
 
-/// [`plastic_element_force`]'s body.
-#[allow(clippy::too_many_arguments)]
-#[inline(always)]
-fn plastic_cell(
-    topo: &TetTopology,
-    tets: &[TetB],
-    grad: &[[f64; 3]],
-    lame: Lame,
-    surface: &MohrCoulomb,
-    nodes: &[u32],
-    u: &[f64],
-    volumetric: Volumetric,
-    pore: f64,
-    sensitivity: &[f64],
-    hist: &mut [TetPlastic],
-    f_e: &mut [f64],
-) -> CellStep {
-    let d = point_displacements(topo, nodes, u);
-    let mut eps = [[0.0; 6]; MAX_TETS];
-    let own = tet_strains_into(topo, tets, &d, &mut eps);
-    let e = volumetric.value(own);
-    let shift = volumetric.shift(tets, &eps);
-    let mut f = [[0.0; 3]; MAX_POINTS];
-    let (mut pressure, mut volume) = (0.0, 0.0); // sum_t V_t p_t, sum_t V_t
-    let mut dev = [0.0; 6]; // sum_t V_t dev(sigma_t)
-
-    // The trial stresses first, then the principal values of their effective
-    // parts (the pore pressure added) all at once (vectorized), then the
-    // returns.
-    let n = tets.len();
-    let mut trials = [[0.0; 6]; MAX_TETS];
-    for ((eps, h), trial) in eps[..n].iter().zip(hist.iter()).zip(trials.iter_mut()) {
-        let strain = shifted(mixed(*eps, e), shift);
-        *trial = lame.stress_voigt(six(|i| strain[i] - h.eps_p[i]));
-    }
-    let mut effective = trials;
-    if pore != 0.0 {
-        effective[..n].iter_mut().for_each(|t| *t = shift_normal(*t, pore));
-    }
-    let mut values = [[0.0; 3]; MAX_TETS];
-    principal_values_of(&effective[..n], &mut values[..n]);
-    let each = topo.tets.iter().zip(tets).zip(hist.iter_mut()).zip(trials.iter().zip(&effective).zip(&values));
-    for (((t, op), h), ((&trial, &eff), &v)) in each {
-        let (sigma, now) = match pore {
-            0.0 => surface.return_map_with(lame, trial, v),
-            _ => {
-                let (s, now) = surface.return_map_with(lame, eff, v);
-                (shift_normal(s, -pore), now)
-            }
-        };
-        if now != Yield::Elastic {
-            let dep = compliance(lame, six(|i| trial[i] - sigma[i]));
-            for i in 0..6 {
-                h.eps_p[i] += dep[i];
-            }
-            h.ever = true;
-            h.ever_tension |= now == Yield::Tension;
+        // The trial stresses first, then the principal values of their effective
+        // parts (the pore pressure added) all at once (vectorized), then the
+        // returns.
+        let n = tets.len();
+        let mut trials = [[0.0; 6]; MAX_TETS];
+        for ((eps, h), trial) in eps[..n].iter().zip(hist.iter()).zip(trials.iter_mut()) {
+            let strain = shifted(mixed(*eps, e), shift);
+            *trial = lame.stress_voigt(six(|i| strain[i] - h.eps_p[i]));
         }
-        h.now = now;
-        let p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
-        pressure += op.sqrt_v * op.sqrt_v * p;
-        volume += op.sqrt_v * op.sqrt_v;
-        if shift.is_some() {
-            let vt = op.sqrt_v * op.sqrt_v;
-            for (i, x) in deviatoric(sigma).into_iter().enumerate() {
-                dev[i] += vt * x;
+        let mut effective = trials;
+        if pore != 0.0 {
+            effective[..n].iter_mut().for_each(|t| *t = shift_normal(*t, pore));
+        }
+        let mut values = [[0.0; 3]; MAX_TETS];
+        principal_values_of(&effective[..n], &mut values[..n]);
+        let each = topo.tets.iter().zip(tets).zip(hist.iter_mut()).zip(trials.iter().zip(&effective).zip(&values));
+        for (((t, op), h), ((&trial, &eff), &v)) in each {
+            let (sigma, now) = match pore {
+                0.0 => surface.return_map_with(lame, trial, v),
+                _ => {
+                    let (s, now) = surface.return_map_with(lame, eff, v);
+                    (shift_normal(s, -pore), now)
+                }
+            };
+            if now != Yield::Elastic {
+                let dep = compliance(lame, six(|i| trial[i] - sigma[i]));
+                for i in 0..6 {
+                    h.eps_p[i] += dep[i];
+                }
+                h.ever = true;
+                h.ever_tension |= now == Yield::Tension;
             }
-        }
-        // V_t dev(sigma) grad N_k = sqrt(V_t) dev(sigma) b_k.
-        let s = op.sqrt_v;
-        let (sxx, syy, szz) = (s * (sigma[0] - p), s * (sigma[1] - p), s * (sigma[2] - p));
-        let (syz, sxz, sxy) = (s * sigma[3], s * sigma[4], s * sigma[5]);
-        for (k, &pt) in t.iter().enumerate() {
-            let (bx, by, bz) = (op.b[3 * k], op.b[3 * k + 1], op.b[3 * k + 2]);
-            let fp = &mut f[pt as usize];
-            fp[0] += sxx * bx + sxy * by + sxz * bz;
-            fp[1] += sxy * bx + syy * by + syz * bz;
-            fp[2] += sxz * bx + syz * by + szz * bz;
-        }
-    }
-    corner_forces(topo, &mut f, f_e);
-    let mut deviatoric = [0.0; 6];
-    match volumetric {
-        Volumetric::Cell => add_pressure_force(grad, pressure, f_e),
-        Volumetric::Nodal(_) => {}
-        Volumetric::Smoothed(s) => {
-            // The cell's own share of the smoothed strain, `-alpha dev(eps_cell)`:
-            // its virtual work `-alpha V dev(sigma_cell) : eps_cell`.
+            h.now = now;
+            let p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
+            pressure += op.sqrt_v * op.sqrt_v * p;
+            volume += op.sqrt_v * op.sqrt_v;
             if shift.is_some() {
-                deviatoric = dev.map(|x| s.alpha * x / volume);
-                add_stress_force(grad, -volume, deviatoric, f_e);
+                let vt = op.sqrt_v * op.sqrt_v;
+                for (i, x) in deviatoric(sigma).into_iter().enumerate() {
+                    dev[i] += vt * x;
+                }
+            }
+            // V_t dev(sigma) grad N_k = sqrt(V_t) dev(sigma) b_k.
+            let s = op.sqrt_v;
+            let (sxx, syy, szz) = (s * (sigma[0] - p), s * (sigma[1] - p), s * (sigma[2] - p));
+            let (syz, sxz, sxy) = (s * sigma[3], s * sigma[4], s * sigma[5]);
+            for (k, &pt) in t.iter().enumerate() {
+                let (bx, by, bz) = (op.b[3 * k], op.b[3 * k + 1], op.b[3 * k + 2]);
+                let fp = &mut f[pt as usize];
+                fp[0] += sxx * bx + sxy * by + sxz * bz;
+                fp[1] += sxy * bx + syy * by + syz * bz;
+                fp[2] += sxz * bx + syz * by + szz * bz;
             }
         }
-    }
-    let radius = match sensitivity.len() >= n && hist[..n].iter().all(|h| h.now == Yield::Elastic) {
-        true => radius_of(surface, &values[..n], sensitivity),
-        false => 0.0,
-    };
-    CellStep { volumetric: e, pressure: pressure / volume, deviatoric, radius }
+        corner_forces(topo, &mut f, f_e);
+        let mut deviatoric = [0.0; 6];
+        match volumetric {
+            Volumetric::Cell => add_pressure_force(grad, pressure, f_e),
+            Volumetric::Nodal(_) => {}
+            Volumetric::Smoothed(s) => {
+                // The cell's own share of the smoothed strain, `-alpha dev(eps_cell)`:
+                // its virtual work `-alpha V dev(sigma_cell) : eps_cell`.
+                if shift.is_some() {
+                    deviatoric = dev.map(|x| s.alpha * x / volume);
+                    add_stress_force(grad, -volume, deviatoric, f_e);
+                }
+            }
+        }
+        let radius = match sensitivity.len() >= n && hist[..n].iter().all(|h| h.now == Yield::Elastic) {
+            true => radius_of(surface, &values[..n], sensitivity),
+            false => 0.0,
+        };
+        CellStep { volumetric: e, pressure: pressure / volume, deviatoric, radius }
+    })
 }
 
 /// `eps + shift` (None: `eps`).

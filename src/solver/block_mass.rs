@@ -247,20 +247,16 @@ impl BlockMass {
 /// Runs with AVX2 where the CPU has it ([`crate::simd`]; the same bits).
 #[inline(always)]
 fn block_times(block: &[f64], x: &[f64], y: &mut [f64], zero: f64) {
-    crate::simd::avx2!(block_times_with(block, x, y, zero))
-}
-
-/// [`block_times`]'s body.
-#[inline(always)]
-fn block_times_with(block: &[f64], x: &[f64], y: &mut [f64], zero: f64) {
-    let n = x.len();
-    y.fill(zero);
-    if n == 0 {
-        return; // a mesh node no element uses
-    }
-    for (column, &xj) in block[..n * n].chunks_exact(n).zip(x) {
-        for (yi, &m) in y.iter_mut().zip(column) {
-            *yi += m * xj;
+    crate::simd::avx2!({
+        let n = x.len();
+        y.fill(zero);
+        if n == 0 {
+            return; // a mesh node no element uses
         }
-    }
+        for (column, &xj) in block[..n * n].chunks_exact(n).zip(x) {
+            for (yi, &m) in y.iter_mut().zip(column) {
+                *yi += m * xj;
+            }
+        }
+    })
 }
