@@ -115,6 +115,39 @@ fn run_of_a_failure_scene_writes_both_phases_and_the_end_state() {
     let _ = std::fs::remove_dir_all(&out);
 }
 
+/// `stages.csv`'s kinetic energy is `v . M v / 2`, the value `history.csv`
+/// has at the same step (with a row every step): not the estimate from the
+/// node-block masses' diagonal that the stop rule compares from step to step,
+/// which overstates it many times over on this scene.
+#[test]
+fn a_stage_records_the_kinetic_energy_of_the_history() {
+    let scene = temp_dir("stage-kinetic-scene").with_extension("toml");
+    let text = std::fs::read_to_string("verification/cases/slope-slip/slope-slip.toml").unwrap().replace(
+        "file = \"slope-slip.msh\"",
+        &format!("file = {:?}", std::fs::canonicalize("verification/cases/slope-slip/slope-slip.msh").unwrap()),
+    );
+    std::fs::write(&scene, format!("{text}\n[output]\nhistory_every = 1\nvtk = false\n")).unwrap();
+    let out = temp_dir("stage-kinetic");
+    assert!(cdem_run(&scene, &out).status.success());
+    let csv = |name: &str| -> Vec<Vec<f64>> {
+        let text = std::fs::read_to_string(out.join(name)).unwrap();
+        text.lines().skip(1).map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect()
+    };
+    let history = csv("history.csv"); // phase, step, time, kinetic_energy, ...
+    let stages = csv("stages.csv"); // step (from the start of phase 2), ..., kinetic_energy, ratio
+    let phase1_end = history.iter().filter(|r| r[0] == 1.0).map(|r| r[1]).fold(0.0, f64::max);
+    let kinetic_at = |step: f64| history.iter().find(|r| r[0] == 2.0 && r[1] == step).map(|r| r[3]);
+    let mut moving = 0;
+    for stage in &stages {
+        let exact = kinetic_at(phase1_end + stage[0]).expect("a history row every step");
+        assert_eq!(stage[4], exact, "stage at phase-2 step {}", stage[0]);
+        moving += (exact > 0.0) as usize;
+    }
+    assert!(moving >= 3, "{moving} stages with a moving mass");
+    let _ = std::fs::remove_file(&scene);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
 #[test]
 fn a_bad_scene_exits_non_zero_naming_the_key_and_writes_nothing() {
     let (scene, out) = edited_column("bad", |t| t.replace("poisson_ratio = 0.3", "poisson_ratio = 0.6"));

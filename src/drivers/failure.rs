@@ -21,10 +21,12 @@
 //! [`JointState`](crate::physics::joint::JointState), read by the joint law.
 //!
 //! Each spring's first failure step is recorded, and a stage row (failed
-//! springs by kind, displacement since phase 1, kinetic energy) every
+//! springs by kind, displacement since phase 1, kinetic energy `v . M v / 2`) every
 //! `stage_every` steps and at the end. A stage copies no state; a frame (a
 //! copy of the displacement, for VTK) is taken at a stage only when the
 //! failure state changed since the last frame, and at the end.
+
+use std::ops::ControlFlow;
 
 use super::phase::{failed_springs, Frame, Phase, Stage, Watch};
 use crate::error::Error;
@@ -33,7 +35,7 @@ use crate::physics::spring::SpringStatus;
 use crate::scene::FailureParams;
 use crate::solver::budget::crossing_elements;
 pub use crate::solver::budget::PHASE2_RESPONSE_TIMES;
-use crate::solver::relax::max_displacement_since;
+use crate::solver::relax::{max_displacement_since, Observer};
 use crate::solver::{PhasePlan, RunReport, Sliding, Solver, SolverParams, State, StepView, Stop};
 use crate::summary::{EndState, FailedSprings};
 
@@ -127,7 +129,7 @@ pub fn run(
     let mut stages = Vec::new();
     let mut frames = Vec::new();
     let mut framed = None::<FailedSprings>;
-    let mut observe = |view: &StepView| {
+    let observe = |view: &StepView| {
         let (st, k) = (view.state, view.steps);
         for (s, status) in st.springs.status.iter().enumerate() {
             if *status != SpringStatus::Intact && failed_at[s].is_none() {
@@ -141,7 +143,7 @@ pub fn run(
                 failed_tension: failed.tension,
                 failed_shear: failed.shear,
                 max_displacement: max_displacement_since(&st.u, &u_elastic),
-                kinetic_energy: view.kinetic,
+                kinetic_energy: view.kinetic_exact.unwrap_or(view.kinetic),
                 unbalanced_ratio: view.ratio,
             };
             stages.push(stage);
@@ -154,6 +156,7 @@ pub fn run(
         watch.step(Phase::Failure, view)
     };
     let sliding = sliding_rule(model, &u_elastic, params);
+    let mut observe = Staged { every: params.stage_every, observe };
     let report = plan.run(model, state, true, Some(sliding), &mut observe)?;
     let end = match report.stop {
         Stop::Converged => EndState::Equilibrium,
@@ -161,4 +164,21 @@ pub fn run(
         Stop::Budget | Stop::Foreseen | Stop::Caller => EndState::Undecided,
     };
     Ok(FailureResult { report, end, u_elastic, stages, failed_at, frames, continued: plan.continued })
+}
+
+/// The failure phase's observer: its stage steps take the exact kinetic
+/// energy ([`StepView::kinetic_exact`]) for `stages.csv`.
+struct Staged<F> {
+    every: usize,
+    observe: F,
+}
+
+impl<F: FnMut(&StepView) -> ControlFlow<()>> Observer for Staged<F> {
+    fn step(&mut self, view: &StepView) -> ControlFlow<()> {
+        (self.observe)(view)
+    }
+
+    fn exact_kinetic_at(&self, steps: usize) -> bool {
+        steps.is_multiple_of(self.every)
+    }
 }

@@ -181,7 +181,7 @@ impl Pcg {
             if state.step.is_multiple_of(rules.history_every) || stop == Some(Stop::Converged) {
                 history.push(HistoryRow::of(model, state, 0.0, ratio));
             }
-            let view = StepView { state, steps, ratio, kinetic: 0.0, stop };
+            let view = StepView { state, steps, ratio, kinetic: 0.0, kinetic_exact: Some(0.0), stop };
             if observer.step(&view).is_break() && stop.is_none() {
                 stop = Some(Stop::Caller);
             }

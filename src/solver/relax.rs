@@ -231,7 +231,13 @@ pub struct StepView<'a> {
     /// Steps taken by this relaxation so far (this one included).
     pub steps: usize,
     pub ratio: f64,
+    /// The step's kinetic-energy estimate (J), the one rule 1 compares from
+    /// step to step: with node-block masses, from their diagonal (the same
+    /// measure every step; it can exceed `v . M v / 2` many times over).
     pub kinetic: f64,
+    /// `v . M v / 2` (J), on the steps the observer asks for
+    /// ([`Observer::exact_kinetic_at`]) and on the last.
+    pub kinetic_exact: Option<f64>,
     /// The rule that fired on this step, if any: it is the last step.
     pub stop: Option<Stop>,
 }
@@ -241,6 +247,13 @@ pub trait Observer {
     /// Called after every step; `Break` stops the relaxation ([`Stop::Caller`])
     /// unless a rule already fired.
     fn step(&mut self, view: &StepView) -> ControlFlow<()>;
+
+    /// Whether the view of step `steps` (of this relaxation) should carry
+    /// the exact kinetic energy ([`StepView::kinetic_exact`]; a pass over
+    /// the masses).
+    fn exact_kinetic_at(&self, _steps: usize) -> bool {
+        false
+    }
 }
 
 impl<F: FnMut(&StepView) -> ControlFlow<()>> Observer for F {
@@ -324,7 +337,8 @@ pub fn relax(
         if state.step.is_multiple_of(rules.history_every) || stop == Some(Stop::Converged) {
             history.push(solver.history_row(model, state, kinetic, ratio));
         }
-        let view = StepView { state, steps, ratio, kinetic, stop };
+        let kinetic_exact = (stop.is_some() || observer.exact_kinetic_at(steps)).then(|| solver.kinetic_energy(state));
+        let view = StepView { state, steps, ratio, kinetic, kinetic_exact, stop };
         if observer.step(&view).is_break() && stop.is_none() {
             stop = Some(Stop::Caller);
         }
