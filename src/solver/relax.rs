@@ -236,7 +236,8 @@ pub struct StepView<'a> {
     /// measure every step; it can exceed `v . M v / 2` many times over).
     pub kinetic: f64,
     /// `v . M v / 2` (J), on the steps the observer asks for
-    /// ([`Observer::exact_kinetic_at`]) and on the last.
+    /// ([`Observer::exact_kinetic_at`]), the steps the history records, and
+    /// the last.
     pub kinetic_exact: Option<f64>,
     /// The rule that fired on this step, if any: it is the last step.
     pub stop: Option<Stop>,
@@ -334,10 +335,12 @@ pub fn relax(
         } else {
             None
         };
-        if state.step.is_multiple_of(rules.history_every) || stop == Some(Stop::Converged) {
-            history.push(solver.history_row(model, state, kinetic, ratio));
+        let record = state.step.is_multiple_of(rules.history_every) || stop == Some(Stop::Converged);
+        let kinetic_exact = (record || stop.is_some() || observer.exact_kinetic_at(steps))
+            .then(|| solver.exact_kinetic(state, kinetic));
+        if let (true, Some(exact)) = (record, kinetic_exact) {
+            history.push(HistoryRow::of(model, state, exact, ratio));
         }
-        let kinetic_exact = (stop.is_some() || observer.exact_kinetic_at(steps)).then(|| solver.kinetic_energy(state));
         let view = StepView { state, steps, ratio, kinetic, kinetic_exact, stop };
         if observer.step(&view).is_break() && stop.is_none() {
             stop = Some(Stop::Caller);
