@@ -141,7 +141,7 @@ impl MohrCoulomb {
     }
 
     /// [`Self::margin`] from the principal values `s` (descending), for a
-    /// batch whose values came from [`principal_values_of`].
+    /// batch whose values came from [`principal_lanes`].
     #[inline(always)]
     pub fn margin_of(&self, s: [f64; 3]) -> f64 {
         -self.excess(0, s).max(s[0] - self.tensile)
@@ -181,22 +181,91 @@ impl MohrCoulomb {
     /// Box 8.5 picks the edge the same way).
     #[inline(always)]
     fn main_plane_return(&self, lame: Lame, s: [f64; 3], excess: f64, tol: f64) -> Result<[f64; 3], usize> {
-        let Lame { lambda, mu } = lame;
-        let (sf, sp) = (self.sin_phi, self.sin_psi);
-        let (n1, n3) = (1.0 + sp, -(1.0 - sp));
-        // D n with D = (lambda + 2 mu) on the diagonal, lambda off it.
-        let dn =
-            [(lambda + 2.0 * mu) * n1 + lambda * n3, lambda * n1 + lambda * n3, lambda * n1 + (lambda + 2.0 * mu) * n3];
-        let denom = (1.0 + sf) * dn[0] - (1.0 - sf) * dn[2];
+        let (dn, denom) = self.main_plane_flow(lame);
         if !(denom > 0.0) {
             return Err(1);
         }
-        let dg = excess / denom;
-        let r = [s[0] - dg * dn[0], s[1] - dg * dn[1], s[2] - dg * dn[2]];
-        match (1..PLANES).all(|p| self.excess(p, r) <= tol) {
+        let r = main_plane_point(s, excess, dn, denom);
+        match self.admissible_off_main(r, tol) {
             true => Ok(r),
             false if self.excess(2, r) > self.excess(1, r) => Err(2),
             false => Err(1),
+        }
+    }
+
+    /// The main plane's flow through the elasticity, `D n` (`D` =
+    /// `lambda + 2 mu` on the diagonal, `lambda` off it), and `m . D n`.
+    #[inline(always)]
+    fn main_plane_flow(&self, lame: Lame) -> ([f64; 3], f64) {
+        let Lame { lambda, mu } = lame;
+        let (sf, sp) = (self.sin_phi, self.sin_psi);
+        let (n1, n3) = (1.0 + sp, -(1.0 - sp));
+        let dn =
+            [(lambda + 2.0 * mu) * n1 + lambda * n3, lambda * n1 + lambda * n3, lambda * n1 + (lambda + 2.0 * mu) * n3];
+        (dn, (1.0 + sf) * dn[0] - (1.0 - sf) * dn[2])
+    }
+
+    /// Whether `r` violates none of the planes but the main one by more
+    /// than `tol`; branch-free.
+    #[inline(always)]
+    fn admissible_off_main(&self, r: [f64; 3], tol: f64) -> bool {
+        (1..PLANES).fold(true, |ok, p| ok & (self.excess(p, r) <= tol))
+    }
+
+    /// The tolerance of a return from the principal values `values`:
+    /// `1e-12` of the largest of them, `k` and the cut-off. The cut-off is
+    /// infinite without one (phi = 0 and no `tensile`): it does not set the
+    /// scale then, or every trial would pass as elastic.
+    #[inline(always)]
+    fn tolerance(&self, values: [f64; 3]) -> f64 {
+        let cut = if self.tensile.is_finite() { self.tensile.abs() } else { 0.0 };
+        let scale = values.iter().fold(self.k.abs().max(cut), |a, v| a.max(v.abs()));
+        1e-12 * scale.max(f64::MIN_POSITIVE)
+    }
+
+    /// The return mapping's common cases for every tetrahedron of a cell at
+    /// once, branch-free so that the loop over them vectorizes. Given the
+    /// lanes of the trial stresses `sigma` and of their principal values
+    /// `values` ([`principal_lanes`]), it sets `elastic[t]` if tetrahedron
+    /// `t` is inside the surface, and `main[t]` if its return is onto the
+    /// main plane alone with its three principal values apart (the spectral
+    /// update's general case), its stress then in `out`. For both, this is
+    /// what [`Self::return_map_with`] gives, bit for bit: the same kernels,
+    /// the same operations in the same order. The others (edges, tension,
+    /// the apex, two equal principal values) are the caller's, by
+    /// [`Self::return_map_with`].
+    #[inline(always)]
+    pub fn common_returns(
+        &self,
+        lame: Lame,
+        sigma: &Lanes<6>,
+        values: &Lanes<3>,
+        out: &mut Lanes<6>,
+        elastic: &mut [bool; MAX_TETS],
+        main: &mut [bool; MAX_TETS],
+    ) {
+        let (mut tol, mut excess) = ([0.0; MAX_TETS], [0.0; MAX_TETS]);
+        let mut outside = false;
+        for t in 0..MAX_TETS {
+            let v = [values[0][t], values[1][t], values[2][t]];
+            (tol[t], excess[t]) = (self.tolerance(v), self.excess(0, v));
+            elastic[t] = excess[t].max(v[0] - self.tensile) <= tol[t];
+            outside |= !elastic[t];
+        }
+        if !outside {
+            return;
+        }
+        let (dn, denom) = self.main_plane_flow(lame);
+        for t in 0..MAX_TETS {
+            let s = six(|i| sigma[i][t]);
+            let v = [values[0][t], values[1][t], values[2][t]];
+            let r = main_plane_point(v, excess[t], dn, denom);
+            let (general, returned) = spectral_general(&s, v, r);
+            main[t] =
+                !elastic[t] & (excess[t] > tol[t]) & (denom > 0.0) & self.admissible_off_main(r, tol[t]) & general;
+            for i in 0..6 {
+                out[i][t] = returned[i];
+            }
         }
     }
 
@@ -248,7 +317,7 @@ impl MohrCoulomb {
     }
 
     /// [`Self::return_map`] given the trial's principal values `values`
-    /// (from [`principal_values_of`], as a cell's pass computes them for all
+    /// (from [`principal_lanes`], as a cell's pass computes them for all
     /// its tetrahedra at once): the same stress and flag, bit for bit. With
     /// the values at hand the invariant filter has nothing left to save, and
     /// it is skipped: in the paper slope's strength reduction it cleared 1.8 %
@@ -263,11 +332,7 @@ impl MohrCoulomb {
     /// principal values `values`.
     #[inline(always)]
     fn return_from(&self, lame: Lame, trial: [f64; 6], values: [f64; 3]) -> ([f64; 6], Yield) {
-        // The cut-off is infinite without one (phi = 0 and no `tensile`): it
-        // does not set the scale, or every trial would pass as elastic.
-        let cut = if self.tensile.is_finite() { self.tensile.abs() } else { 0.0 };
-        let scale = values.iter().fold(self.k.abs().max(cut), |a, v| a.max(v.abs()));
-        let tol = 1e-12 * scale.max(f64::MIN_POSITIVE);
+        let tol = self.tolerance(values);
         // With s1 >= s2 >= s3 the main plane and the cut-off on s1 bound the
         // other four: the largest violation is one of these two.
         let main = self.excess(0, values);
@@ -398,52 +463,104 @@ fn principal_elasticity(lame: Lame) -> Matrix3<f64> {
 /// trigonometric solution of the characteristic cubic, Smith 1961), without
 /// the trigonometry: the largest root `c = cos(acos(r) / 3)` of
 /// `4 c^3 - 3 c = r` is [`cos_third_acos`]. Branch-free, so that
-/// [`principal_values_of`] vectorizes it: an isotropic stress (`p2 = 0`)
+/// [`principal_lanes`] vectorizes it: an isotropic stress (`p2 = 0`)
 /// takes `q` thrice at the end, its other values discarded.
 #[inline(always)]
 fn principal_values(sigma: &[f64; 6]) -> [f64; 3] {
-    let [xx, yy, zz, yz, xz, xy] = *sigma;
-    let q = (xx + yy + zz) / 3.0;
-    let p1 = yz * yz + xz * xz + xy * xy;
-    let (a, b, c) = (xx - q, yy - q, zz - q);
-    let p2 = a * a + b * b + c * c + 2.0 * p1;
-    let p = (p2 / 6.0).sqrt();
-    // det((A - q I) / p) / 2.
-    let det = a * (b * c - yz * yz) - xy * (xy * c - yz * xz) + xz * (xy * yz - b * xz);
-    let r = (det / (2.0 * p * p * p)).clamp(-1.0, 1.0);
-    // cos(a + 2 pi / 3) = -cos(a) / 2 - sin(a) sqrt(3) / 2, a in [0, pi / 3].
-    let c = cos_third_acos(r);
-    let s = (1.0 - c * c).max(0.0).sqrt();
-    let s1 = q + 2.0 * p * c;
-    let s3 = q - p * (c + 3f64.sqrt() * s);
-    let s2 = 3.0 * q - s1 - s3;
-    let round = p2 > 0.0;
-    [if round { s1 } else { q }, if round { s2 } else { q }, if round { s3 } else { q }]
+    let cubic = Cubic::of(sigma);
+    cubic.roots(cos_third_acos(cubic.r))
 }
 
-/// [`principal_values`] of every stress of `sigma` into `out` (at most
-/// [`MAX_TETS`]), on their components gathered first, so that the compiler
-/// vectorizes the loop over the stresses.
+/// The characteristic cubic of a stress in [`principal_values`]' terms:
+/// its mean `q`, `p2 = |A - q I|^2`, `p = sqrt(p2 / 6)` and
+/// `r = det((A - q I) / p) / 2` in `[-1, 1]`.
+#[derive(Clone, Copy)]
+struct Cubic {
+    q: f64,
+    p2: f64,
+    p: f64,
+    r: f64,
+}
+
+impl Cubic {
+    #[inline(always)]
+    fn of(sigma: &[f64; 6]) -> Self {
+        let [xx, yy, zz, yz, xz, xy] = *sigma;
+        let q = (xx + yy + zz) / 3.0;
+        let p1 = yz * yz + xz * xz + xy * xy;
+        let (a, b, c) = (xx - q, yy - q, zz - q);
+        let p2 = a * a + b * b + c * c + 2.0 * p1;
+        let p = (p2 / 6.0).sqrt();
+        let det = a * (b * c - yz * yz) - xy * (xy * c - yz * xz) + xz * (xy * yz - b * xz);
+        Self { q, p2, p, r: (det / (2.0 * p * p * p)).clamp(-1.0, 1.0) }
+    }
+
+    /// The roots, descending, from `c = cos(acos(r) / 3)`; an isotropic
+    /// stress (`p2 = 0`) takes `q` thrice.
+    #[inline(always)]
+    fn roots(&self, c: f64) -> [f64; 3] {
+        let Self { q, p2, p, .. } = *self;
+        // cos(a + 2 pi / 3) = -cos(a) / 2 - sin(a) sqrt(3) / 2, a in [0, pi / 3].
+        let s = (1.0 - c * c).max(0.0).sqrt();
+        let s1 = q + 2.0 * p * c;
+        let s3 = q - p * (c + 3f64.sqrt() * s);
+        let s2 = 3.0 * q - s1 - s3;
+        let round = p2 > 0.0;
+        [if round { s1 } else { q }, if round { s2 } else { q }, if round { s3 } else { q }]
+    }
+}
+
+/// A cell's tetrahedra as lanes: component `i` of tetrahedron `t` at
+/// `[i][t]` (a structure of arrays), so that a loop over `t` vectorizes.
+pub type Lanes<const K: usize> = [[f64; MAX_TETS]; K];
+
+/// The lanes of the first `n` stresses of `sigma` (zero beyond them).
 #[inline(always)]
-pub fn principal_values_of(sigma: &[[f64; 6]], out: &mut [[f64; 3]]) {
-    const N: usize = MAX_TETS;
-    let n = sigma.len().min(out.len()).min(N);
-    let mut comp = [[0.0; N]; 6];
-    for (t, s) in sigma[..n].iter().enumerate() {
+pub fn lanes_of(sigma: &[[f64; 6]], n: usize) -> Lanes<6> {
+    let mut comp = [[0.0; MAX_TETS]; 6];
+    for (t, s) in sigma[..n.min(MAX_TETS)].iter().enumerate() {
         for i in 0..6 {
             comp[i][t] = s[i];
         }
     }
-    let mut values = [[0.0; N]; 3];
-    for t in 0..n {
-        let v = principal_values(&[comp[0][t], comp[1][t], comp[2][t], comp[3][t], comp[4][t], comp[5][t]]);
-        for i in 0..3 {
-            values[i][t] = v[i];
+    comp
+}
+
+/// [`principal_values`] of every lane of `sigma`: a loop the compiler
+/// vectorizes.
+#[inline(always)]
+pub fn principal_lanes(sigma: &Lanes<6>) -> Lanes<3> {
+    const N: usize = MAX_TETS;
+    let (mut cubic, mut t) = ([Cubic { q: 0.0, p2: 0.0, p: 0.0, r: 0.0 }; N], [0.0; N]);
+    for l in 0..N {
+        cubic[l] = Cubic::of(&six(|i| sigma[i][l]));
+        t[l] = chebyshev_argument(cubic[l].r);
+    }
+    // cos_third_acos's polynomial a degree at a time across the lanes: the
+    // same operations per lane, but the lanes' chains side by side rather
+    // than one long chain after the other.
+    let mut c = [COS_THIRD_ACOS[17]; N];
+    for k in (0..17).rev() {
+        for l in 0..N {
+            c[l] = c[l] * t[l] + COS_THIRD_ACOS[k];
         }
     }
-    for (t, o) in out[..n].iter_mut().enumerate() {
-        *o = [values[0][t], values[1][t], values[2][t]];
+    let mut values = [[0.0; N]; 3];
+    for l in 0..N {
+        let v = cubic[l].roots(c[l]);
+        for i in 0..3 {
+            values[i][l] = v[i];
+        }
     }
+    values
+}
+
+/// The return of the principal values `s` onto the main plane alone,
+/// `s - dg D n` with `dg = excess / (m . D n)`.
+#[inline(always)]
+fn main_plane_point(s: [f64; 3], excess: f64, dn: [f64; 3], denom: f64) -> [f64; 3] {
+    let dg = excess / denom;
+    [s[0] - dg * dn[0], s[1] - dg * dn[1], s[2] - dg * dn[2]]
 }
 
 /// `cos(acos(r) / 3)` for `r` in `[-1, 1]`: with `x = sqrt((1 + r) / 2)`
@@ -453,38 +570,47 @@ pub fn principal_values_of(sigma: &[[f64; 6]], out: &mut [[f64; 3]]) {
 /// values (scripts/cos_third_acos.py computes the coefficients and that
 /// error), within 4.5e-16 of libm's `(r.acos() / 3.0).cos()` (a test). It
 /// replaces that libm pair, a fifth of a yielding tetrahedron's cost, and
-/// unlike it vectorizes ([`principal_values_of`]; references/performance.md,
+/// unlike it vectorizes ([`principal_lanes`]; references/performance.md,
 /// "2026-12-05 (sixth)").
 #[inline(always)]
 fn cos_third_acos(r: f64) -> f64 {
-    const C: [f64; 18] = [
-        0.7660444431189779,
-        0.2474090663228531,
-        -0.015509188436466925,
-        0.0024663528150807865,
-        -0.0005041246916471823,
-        0.00011642545310520361,
-        -2.8919931061417995e-05,
-        7.541076906895577e-06,
-        -2.0358967113961453e-06,
-        5.6415984269464e-07,
-        -1.5946504043853947e-07,
-        4.583483187568922e-08,
-        -1.348180209578561e-08,
-        3.972853735371566e-09,
-        -1.0526658241086324e-09,
-        3.1461757039177313e-10,
-        -1.6358250988858183e-10,
-        4.9908110575962183e-11,
-    ];
-    let x = (0.5 * (1.0 + r)).max(0.0).sqrt();
-    let t = 2.0 * x - 1.0;
-    let mut h = C[17];
+    let t = chebyshev_argument(r);
+    let mut h = COS_THIRD_ACOS[17];
     for k in (0..17).rev() {
-        h = h * t + C[k];
+        h = h * t + COS_THIRD_ACOS[k];
     }
     h
 }
+
+/// [`cos_third_acos`]'s Chebyshev variable `t = 2 sqrt((1 + r) / 2) - 1`.
+#[inline(always)]
+fn chebyshev_argument(r: f64) -> f64 {
+    let x = (0.5 * (1.0 + r)).max(0.0).sqrt();
+    2.0 * x - 1.0
+}
+
+/// [`cos_third_acos`]'s Chebyshev interpolant in monomials of `t`
+/// (scripts/cos_third_acos.py).
+const COS_THIRD_ACOS: [f64; 18] = [
+    0.7660444431189779,
+    0.2474090663228531,
+    -0.015509188436466925,
+    0.0024663528150807865,
+    -0.0005041246916471823,
+    0.00011642545310520361,
+    -2.8919931061417995e-05,
+    7.541076906895577e-06,
+    -2.0358967113961453e-06,
+    5.6415984269464e-07,
+    -1.5946504043853947e-07,
+    4.583483187568922e-08,
+    -1.348180209578561e-08,
+    3.972853735371566e-09,
+    -1.0526658241086324e-09,
+    3.1461757039177313e-10,
+    -1.6358250988858183e-10,
+    4.9908110575962183e-11,
+];
 
 /// The stress whose principal values are `new` on the principal directions
 /// of `sigma` (principal values `old`), without the directions themselves:
@@ -495,6 +621,10 @@ fn cos_third_acos(r: f64) -> f64 {
 /// the pair takes its mean change (the return keeps a pair equal).
 #[inline(always)]
 fn spectral_update(sigma: &[f64; 6], old: [f64; 3], new: [f64; 3]) -> [f64; 6] {
+    let (general, updated) = spectral_general(sigma, old, new);
+    if general {
+        return updated;
+    }
     let d = [new[0] - old[0], new[1] - old[1], new[2] - old[2]];
     let spread = old[0] - old[2];
     let scale = old[0].abs().max(old[2].abs()).max(f64::MIN_POSITIVE);
@@ -504,11 +634,37 @@ fn spectral_update(sigma: &[f64; 6], old: [f64; 3], new: [f64; 3]) -> [f64; 6] {
             out[i] += w * m[i];
         }
     };
-    const I: [f64; 6] = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0];
     if spread <= 1e-12 * scale {
         add((d[0] + d[1] + d[2]) / 3.0, I);
         return out;
     }
+    let lin = |a: f64, w: f64| six(|i| (sigma[i] - a * I[i]) / w);
+    if old[0] - old[1] <= 1e-6 * spread {
+        // P_12 = (A - s_3 I) / (s_1 - s_3), P_3 = I - P_12.
+        add(d[2], I);
+        add(0.5 * (d[0] + d[1]) - d[2], lin(old[2], spread));
+    } else {
+        // s_2 = s_3: P_1 = (A - s_3 I) / (s_1 - s_3), P_23 = I - P_1.
+        add(0.5 * (d[1] + d[2]), I);
+        add(d[0] - 0.5 * (d[1] + d[2]), lin(old[2], spread));
+    }
+    out
+}
+
+/// The unit tensor in Voigt order.
+const I: [f64; 6] = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0];
+
+/// [`spectral_update`]'s general case, three principal values apart:
+/// `sigma + d_2 I + (d_1 - d_2) P_1 + (d_3 - d_2) P_3`, `d_i = new_i - old_i`,
+/// computed whatever the values (branch-free, for
+/// [`MohrCoulomb::common_returns`]), and whether it is the case.
+#[inline(always)]
+fn spectral_general(sigma: &[f64; 6], old: [f64; 3], new: [f64; 3]) -> (bool, [f64; 6]) {
+    let d = [new[0] - old[0], new[1] - old[1], new[2] - old[2]];
+    let spread = old[0] - old[2];
+    let scale = old[0].abs().max(old[2].abs()).max(f64::MIN_POSITIVE);
+    let (g12, g23) = (old[0] - old[1], old[1] - old[2]);
+    let general = !(spread <= 1e-12 * scale) & !(g12 <= 1e-6 * spread) & !(g23 <= 1e-6 * spread);
     // A^2 of the symmetric sigma (Voigt xx yy zz yz xz xy).
     let [xx, yy, zz, yz, xz, xy] = *sigma;
     let a2 = [
@@ -521,22 +677,9 @@ fn spectral_update(sigma: &[f64; 6], old: [f64; 3], new: [f64; 3]) -> [f64; 6] {
     ];
     // (A - a I)(A - b I) / w.
     let quad = |a: f64, b: f64, w: f64| six(|i| (a2[i] - (a + b) * sigma[i] + a * b * I[i]) / w);
-    let lin = |a: f64, w: f64| six(|i| (sigma[i] - a * I[i]) / w);
-    let (g12, g23) = (old[0] - old[1], old[1] - old[2]);
-    if g12 <= 1e-6 * spread {
-        // P_12 = (A - s_3 I) / (s_1 - s_3), P_3 = I - P_12.
-        add(d[2], I);
-        add(0.5 * (d[0] + d[1]) - d[2], lin(old[2], spread));
-    } else if g23 <= 1e-6 * spread {
-        // P_1 = (A - s_3 I) / (s_1 - s_3), P_23 = I - P_1.
-        add(0.5 * (d[1] + d[2]), I);
-        add(d[0] - 0.5 * (d[1] + d[2]), lin(old[2], spread));
-    } else {
-        add(d[1], I);
-        add(d[0] - d[1], quad(old[1], old[2], g12 * spread));
-        add(d[2] - d[1], quad(old[0], old[1], spread * g23));
-    }
-    out
+    let (p1, p3) = (quad(old[1], old[2], g12 * spread), quad(old[0], old[1], spread * g23));
+    let out = six(|i| ((sigma[i] + d[1] * I[i]) + (d[0] - d[1]) * p1[i]) + (d[2] - d[1]) * p3[i]);
+    (general, out)
 }
 
 /// Principal stresses ordered `s1 >= s2 >= s3` and their directions
@@ -707,8 +850,8 @@ mod tests {
             for (s, x) in sigma.iter_mut().zip(special) {
                 *s = x;
             }
-            let mut out = vec![[f64::NAN; 3]; n];
-            principal_values_of(&sigma, &mut out);
+            let values = principal_lanes(&lanes_of(&sigma, n));
+            let out: Vec<[f64; 3]> = (0..n).map(|t| [values[0][t], values[1][t], values[2][t]]).collect();
             for (s, v) in sigma.iter().zip(&out) {
                 let want = principal_values(s);
                 assert_eq!(v.map(f64::to_bits), want.map(f64::to_bits), "{s:?}: {v:?} against {want:?}");
@@ -725,6 +868,55 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn the_common_returns_are_the_return_mapping_s_bit_for_bit() {
+        // Trial stresses from well inside to far beyond the surface (the
+        // main plane, its edges, the cut-off, the apex), with two equal
+        // principal values among them, on surfaces with and without a
+        // cut-off and dilation: every lane the batch answers must be the
+        // scalar return's stress and flag, and each kind must occur.
+        let mut next = uniform(29);
+        let (mut elastic_n, mut main_n, mut other_n) = (0, 0, 0);
+        for mc in [rock(1e5, 30.0, 5e4, 0.0), rock(2e4, 18.0, 1e9, 10.0), rock(5e4, 0.0, f64::INFINITY, 0.0)] {
+            for round in 0..200 {
+                let scale = 1e3 * 10f64.powi(round % 4);
+                let mut sigma: Vec<[f64; 6]> = (0..MAX_TETS)
+                    .map(|_| {
+                        let p = -2.0 * scale * next().abs();
+                        let mut s = [0.0; 6];
+                        for (i, x) in s.iter_mut().enumerate() {
+                            *x = if i < 3 { p + scale * next() } else { 0.3 * scale * next() };
+                        }
+                        s
+                    })
+                    .collect();
+                sigma[0] = [-3.0 * scale, -scale, -scale, 0.0, 0.0, 0.0]; // s2 = s3
+                let lanes = lanes_of(&sigma, MAX_TETS);
+                let values = principal_lanes(&lanes);
+                let (mut out, mut elastic, mut main) =
+                    ([[f64::NAN; MAX_TETS]; 6], [false; MAX_TETS], [false; MAX_TETS]);
+                mc.common_returns(lame(), &lanes, &values, &mut out, &mut elastic, &mut main);
+                for (t, s) in sigma.iter().enumerate() {
+                    let (want, kind) = mc.return_map_with(lame(), *s, [values[0][t], values[1][t], values[2][t]]);
+                    let got = six(|i| out[i][t]);
+                    match (elastic[t], main[t]) {
+                        (true, _) => {
+                            assert_eq!(kind, Yield::Elastic, "{s:?}");
+                            elastic_n += 1;
+                        }
+                        (false, true) => {
+                            assert_eq!((got.map(f64::to_bits), kind), (want.map(f64::to_bits), Yield::Shear), "{s:?}");
+                            main_n += 1;
+                        }
+                        (false, false) => other_n += 1,
+                    }
+                }
+            }
+        }
+        eprintln!("elastic {elastic_n}, main plane {main_n}, others {other_n}");
+        assert!(elastic_n > 100 && main_n > 100 && other_n > 100, "{elastic_n} / {main_n} / {other_n}");
     }
 
     #[test]

@@ -36,7 +36,7 @@
 //! mapping each step, `eps_t^p += D^-1 (sigma_trial - sigma_t)`.
 
 use super::elasticity::Lame;
-use super::mohr_coulomb::{compliance, principal_values_of, six, MohrCoulomb, RockStrength, Yield};
+use super::mohr_coulomb::{compliance, lanes_of, principal_lanes, six, Lanes, MohrCoulomb, RockStrength, Yield};
 use super::tet_operator::{corner_forces, point_displacements, scaled_gradients, TetTopology};
 use crate::mesh::shape::{CellKind, MAX_POINTS};
 
@@ -313,16 +313,22 @@ pub fn plastic_element_force(
         if pore != 0.0 {
             effective[..n].iter_mut().for_each(|t| *t = shift_normal(*t, pore));
         }
-        let mut values = [[0.0; 3]; MAX_TETS];
-        principal_values_of(&effective[..n], &mut values[..n]);
-        let each = topo.tets.iter().zip(tets).zip(hist.iter_mut()).zip(trials.iter().zip(&effective).zip(&values));
-        for (((t, op), h), ((&trial, &eff), &v)) in each {
-            let (sigma, now) = match pore {
-                0.0 => surface.return_map_with(lame, trial, v),
-                _ => {
-                    let (s, now) = surface.return_map_with(lame, eff, v);
-                    (shift_normal(s, -pore), now)
-                }
+        let lanes = lanes_of(&effective, n);
+        let values = principal_lanes(&lanes);
+        // The common returns (elastic, or onto the main plane) of all at
+        // once, vectorized; the others one by one.
+        let (mut returned, mut elastic, mut main) = ([[0.0; MAX_TETS]; 6], [false; MAX_TETS], [false; MAX_TETS]);
+        surface.common_returns(lame, &lanes, &values, &mut returned, &mut elastic, &mut main);
+        let each = topo.tets.iter().zip(tets).zip(hist.iter_mut()).zip(trials.iter().zip(&effective)).enumerate();
+        for (k, (((t, op), h), (&trial, &eff))) in each {
+            let (s, now) = match (elastic[k], main[k]) {
+                (true, _) => (eff, Yield::Elastic),
+                (false, true) => (six(|i| returned[i][k]), Yield::Shear),
+                (false, false) => surface.return_map_with(lame, eff, [values[0][k], values[1][k], values[2][k]]),
+            };
+            let sigma = match pore {
+                0.0 => s,
+                _ => shift_normal(s, -pore),
             };
             if now != Yield::Elastic {
                 let dep = compliance(lame, six(|i| trial[i] - sigma[i]));
@@ -369,7 +375,7 @@ pub fn plastic_element_force(
             }
         }
         let radius = match sensitivity.len() >= n && hist[..n].iter().all(|h| h.now == Yield::Elastic) {
-            true => radius_of(surface, &values[..n], sensitivity),
+            true => radius_of(surface, &values, &sensitivity[..n]),
             false => 0.0,
         };
         CellStep { volumetric: e, pressure: pressure / volume, deviatoric, radius }
@@ -517,19 +523,17 @@ pub fn screen_radius(
         let strain = mixed(*eps, e);
         *s = shift_normal(lame.stress_voigt(six(|i| strain[i] - h.eps_p[i])), pore);
     }
-    let mut values = [[0.0; 3]; MAX_TETS];
-    principal_values_of(&sigma[..n], &mut values[..n]);
-    radius_of(surface, &values[..n], sensitivity)
+    radius_of(surface, &principal_lanes(&lanes_of(&sigma, n)), &sensitivity[..n])
 }
 
-/// `min_t margin_t / (2 G_t)` from the tetrahedra's principal effective
-/// stresses `values` and sensitivities `G_t`; 0 if one is on or outside
-/// the surface.
+/// `min_t margin_t / (2 G_t)` from the lanes of the tetrahedra's principal
+/// effective stresses `values` and their sensitivities `G_t` (one per
+/// tetrahedron); 0 if one is on or outside the surface.
 #[inline(always)]
-fn radius_of(surface: &MohrCoulomb, values: &[[f64; 3]], sensitivity: &[f64]) -> f64 {
+fn radius_of(surface: &MohrCoulomb, values: &Lanes<3>, sensitivity: &[f64]) -> f64 {
     let mut radius = f64::INFINITY;
-    for (&s, &g) in values.iter().zip(sensitivity) {
-        let margin = surface.margin_of(s);
+    for (t, &g) in sensitivity.iter().enumerate() {
+        let margin = surface.margin_of([values[0][t], values[1][t], values[2][t]]);
         if !(margin > 0.0) {
             return 0.0;
         }
