@@ -223,50 +223,46 @@ impl MohrCoulomb {
         1e-12 * scale.max(f64::MIN_POSITIVE)
     }
 
-    /// The return mapping's common cases for every tetrahedron of a cell at
-    /// once, branch-free so that the loop over them vectorizes. Given the
-    /// lanes of the trial stresses `sigma` and of their principal values
-    /// `values` ([`principal_lanes`]), it sets `elastic[t]` if tetrahedron
-    /// `t` is inside the surface, and `main[t]` if its return is onto the
-    /// main plane alone with its three principal values apart (the spectral
-    /// update's general case), its stress then in `out`. For both, this is
-    /// what [`Self::return_map_with`] gives, bit for bit: the same kernels,
-    /// the same operations in the same order. The others (edges, tension,
-    /// the apex, two equal principal values) are the caller's, by
+    /// The return mapping's common cases for the first `n` tetrahedra of a
+    /// cell at once, branch-free so that the loop over them vectorizes,
+    /// from the lanes of their trial stresses `sigma` and of their principal
+    /// values `values` ([`principal_lanes`]): which are inside the surface,
+    /// and which return onto the main plane alone with three principal
+    /// values apart (the spectral update's general case), with their
+    /// stresses ([`CommonReturns`]). For both, this is what
+    /// [`Self::return_map_with`] gives, bit for bit: the same kernels, the
+    /// same operations in the same order. The others (edges, tension, the
+    /// apex, two equal principal values) are the caller's, by
     /// [`Self::return_map_with`].
     #[inline(always)]
-    pub fn common_returns(
-        &self,
-        lame: Lame,
-        sigma: &Lanes<6>,
-        values: &Lanes<3>,
-        out: &mut Lanes<6>,
-        elastic: &mut [bool; MAX_TETS],
-        main: &mut [bool; MAX_TETS],
-    ) {
+    pub fn common_returns(&self, lame: Lame, sigma: &Lanes<6>, values: &Lanes<3>, n: usize) -> CommonReturns {
+        let n = n.min(MAX_TETS);
+        let mut out =
+            CommonReturns { stress: [[0.0; MAX_TETS]; 6], elastic: [false; MAX_TETS], main: [false; MAX_TETS] };
         let (mut tol, mut excess) = ([0.0; MAX_TETS], [0.0; MAX_TETS]);
         let mut outside = false;
-        for t in 0..MAX_TETS {
+        for t in 0..n {
             let v = [values[0][t], values[1][t], values[2][t]];
             (tol[t], excess[t]) = (self.tolerance(v), self.excess(0, v));
-            elastic[t] = excess[t].max(v[0] - self.tensile) <= tol[t];
-            outside |= !elastic[t];
+            out.elastic[t] = excess[t].max(v[0] - self.tensile) <= tol[t];
+            outside |= !out.elastic[t];
         }
         if !outside {
-            return;
+            return out;
         }
         let (dn, denom) = self.main_plane_flow(lame);
-        for t in 0..MAX_TETS {
+        for t in 0..n {
             let s = six(|i| sigma[i][t]);
             let v = [values[0][t], values[1][t], values[2][t]];
             let r = main_plane_point(v, excess[t], dn, denom);
             let (general, returned) = spectral_general(&s, v, r);
-            main[t] =
-                !elastic[t] & (excess[t] > tol[t]) & (denom > 0.0) & self.admissible_off_main(r, tol[t]) & general;
+            out.main[t] =
+                !out.elastic[t] & (excess[t] > tol[t]) & (denom > 0.0) & self.admissible_off_main(r, tol[t]) & general;
             for i in 0..6 {
-                out[i][t] = returned[i];
+                out.stress[i][t] = returned[i];
             }
         }
+        out
     }
 
     /// The return onto the main plane and shear plane `q` (1: the edge
@@ -514,6 +510,15 @@ impl Cubic {
 /// `[i][t]` (a structure of arrays), so that a loop over `t` vectorizes.
 pub type Lanes<const K: usize> = [[f64; MAX_TETS]; K];
 
+/// What [`MohrCoulomb::common_returns`] decided for each lane: `elastic`
+/// (inside the surface), or `main` (returned onto the main plane alone,
+/// its stress in `stress`), or neither (the caller's).
+pub struct CommonReturns {
+    pub stress: Lanes<6>,
+    pub elastic: [bool; MAX_TETS],
+    pub main: [bool; MAX_TETS],
+}
+
 /// The lanes of the first `n` stresses of `sigma` (zero beyond them).
 #[inline(always)]
 pub fn lanes_of(sigma: &[[f64; 6]], n: usize) -> Lanes<6> {
@@ -526,13 +531,14 @@ pub fn lanes_of(sigma: &[[f64; 6]], n: usize) -> Lanes<6> {
     comp
 }
 
-/// [`principal_values`] of every lane of `sigma`: a loop the compiler
-/// vectorizes.
+/// [`principal_values`] of the first `n` lanes of `sigma` (zero beyond
+/// them): loops the compiler vectorizes.
 #[inline(always)]
-pub fn principal_lanes(sigma: &Lanes<6>) -> Lanes<3> {
+pub fn principal_lanes(sigma: &Lanes<6>, n: usize) -> Lanes<3> {
     const N: usize = MAX_TETS;
+    let n = n.min(N);
     let (mut cubic, mut t) = ([Cubic { q: 0.0, p2: 0.0, p: 0.0, r: 0.0 }; N], [0.0; N]);
-    for l in 0..N {
+    for l in 0..n {
         cubic[l] = Cubic::of(&six(|i| sigma[i][l]));
         t[l] = chebyshev_argument(cubic[l].r);
     }
@@ -541,12 +547,12 @@ pub fn principal_lanes(sigma: &Lanes<6>) -> Lanes<3> {
     // than one long chain after the other.
     let mut c = [COS_THIRD_ACOS[17]; N];
     for k in (0..17).rev() {
-        for l in 0..N {
+        for l in 0..n {
             c[l] = c[l] * t[l] + COS_THIRD_ACOS[k];
         }
     }
     let mut values = [[0.0; N]; 3];
-    for l in 0..N {
+    for l in 0..n {
         let v = cubic[l].roots(c[l]);
         for i in 0..3 {
             values[i][l] = v[i];
@@ -850,7 +856,7 @@ mod tests {
             for (s, x) in sigma.iter_mut().zip(special) {
                 *s = x;
             }
-            let values = principal_lanes(&lanes_of(&sigma, n));
+            let values = principal_lanes(&lanes_of(&sigma, n), n);
             let out: Vec<[f64; 3]> = (0..n).map(|t| [values[0][t], values[1][t], values[2][t]]).collect();
             for (s, v) in sigma.iter().zip(&out) {
                 let want = principal_values(s);
@@ -892,13 +898,17 @@ mod tests {
                         s
                     })
                     .collect();
-                sigma[0] = [-3.0 * scale, -scale, -scale, 0.0, 0.0, 0.0]; // s2 = s3
-                let lanes = lanes_of(&sigma, MAX_TETS);
-                let values = principal_lanes(&lanes);
-                let (mut out, mut elastic, mut main) =
-                    ([[f64::NAN; MAX_TETS]; 6], [false; MAX_TETS], [false; MAX_TETS]);
-                mc.common_returns(lame(), &lanes, &values, &mut out, &mut elastic, &mut main);
-                for (t, s) in sigma.iter().enumerate() {
+                // A tetrahedron's one lane, a prism's 18 and a hexahedron's 24.
+                let n = [1, 18, MAX_TETS][round as usize % 3];
+                if n > 1 {
+                    // Two equal principal values, s2 = s3.
+                    sigma[n - 1] = [-3.0 * scale, -scale, -scale, 0.0, 0.0, 0.0];
+                }
+                let lanes = lanes_of(&sigma, n);
+                let values = principal_lanes(&lanes, n);
+                let CommonReturns { stress: out, elastic, main } = mc.common_returns(lame(), &lanes, &values, n);
+                assert!(elastic[n..].iter().chain(&main[n..]).all(|&b| !b), "lanes beyond {n} untouched");
+                for (t, s) in sigma[..n].iter().enumerate() {
                     let (want, kind) = mc.return_map_with(lame(), *s, [values[0][t], values[1][t], values[2][t]]);
                     let got = six(|i| out[i][t]);
                     match (elastic[t], main[t]) {

@@ -36,7 +36,9 @@
 //! mapping each step, `eps_t^p += D^-1 (sigma_trial - sigma_t)`.
 
 use super::elasticity::Lame;
-use super::mohr_coulomb::{compliance, lanes_of, principal_lanes, six, Lanes, MohrCoulomb, RockStrength, Yield};
+use super::mohr_coulomb::{
+    compliance, lanes_of, principal_lanes, six, CommonReturns, Lanes, MohrCoulomb, RockStrength, Yield,
+};
 use super::tet_operator::{corner_forces, point_displacements, scaled_gradients, TetTopology};
 use crate::mesh::shape::{CellKind, MAX_POINTS};
 
@@ -314,11 +316,18 @@ pub fn plastic_element_force(
             effective[..n].iter_mut().for_each(|t| *t = shift_normal(*t, pore));
         }
         let lanes = lanes_of(&effective, n);
-        let values = principal_lanes(&lanes);
+        // A hexahedron's 24 lanes as a constant: whole vectors, no remainder.
+        let values = match n {
+            MAX_TETS => principal_lanes(&lanes, MAX_TETS),
+            _ => principal_lanes(&lanes, n),
+        };
         // The common returns (elastic, or onto the main plane) of all at
-        // once, vectorized; the others one by one.
-        let (mut returned, mut elastic, mut main) = ([[0.0; MAX_TETS]; 6], [false; MAX_TETS], [false; MAX_TETS]);
-        surface.common_returns(lame, &lanes, &values, &mut returned, &mut elastic, &mut main);
+        // once, vectorized, the others one by one; a tetrahedral cell's one
+        // tetrahedron has nothing to vectorize and takes the scalar return.
+        let CommonReturns { stress: returned, elastic, main } = match n {
+            MAX_TETS => surface.common_returns(lame, &lanes, &values, MAX_TETS),
+            _ => surface.common_returns(lame, &lanes, &values, if n > 1 { n } else { 0 }),
+        };
         let each = topo.tets.iter().zip(tets).zip(hist.iter_mut()).zip(trials.iter().zip(&effective)).enumerate();
         for (k, (((t, op), h), (&trial, &eff))) in each {
             let (s, now) = match (elastic[k], main[k]) {
@@ -523,7 +532,7 @@ pub fn screen_radius(
         let strain = mixed(*eps, e);
         *s = shift_normal(lame.stress_voigt(six(|i| strain[i] - h.eps_p[i])), pore);
     }
-    radius_of(surface, &principal_lanes(&lanes_of(&sigma, n)), &sensitivity[..n])
+    radius_of(surface, &principal_lanes(&lanes_of(&sigma, n), n), &sensitivity[..n])
 }
 
 /// `min_t margin_t / (2 G_t)` from the lanes of the tetrahedra's principal
