@@ -470,7 +470,7 @@ fn principal_values(sigma: &[f64; 6]) -> [f64; 3] {
 /// The characteristic cubic of a stress in [`principal_values`]' terms:
 /// its mean `q`, `p2 = |A - q I|^2`, `p = sqrt(p2 / 6)` and
 /// `r = det((A - q I) / p) / 2` in `[-1, 1]`.
-#[derive(Clone, Copy)]
+#[derive(Clone, Copy, Default)]
 struct Cubic {
     q: f64,
     p2: f64,
@@ -537,7 +537,7 @@ pub fn lanes_of(sigma: &[[f64; 6]], n: usize) -> Lanes<6> {
 pub fn principal_lanes(sigma: &Lanes<6>, n: usize) -> Lanes<3> {
     const N: usize = MAX_TETS;
     let n = n.min(N);
-    let (mut cubic, mut t) = ([Cubic { q: 0.0, p2: 0.0, p: 0.0, r: 0.0 }; N], [0.0; N]);
+    let (mut cubic, mut t) = ([Cubic::default(); N], [0.0; N]);
     for l in 0..n {
         cubic[l] = Cubic::of(&six(|i| sigma[i][l]));
         t[l] = chebyshev_argument(cubic[l].r);
