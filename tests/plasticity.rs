@@ -154,6 +154,34 @@ fn a_skin_band_at_the_face_keeps_cheng_61s_prisms_standing_where_the_one_element
     assert_eq!(banded, EndState::Equilibrium, "the banded prisms stand ({banded_u:.3e} m)");
 }
 
+/// The sliding rule decides on two windows with plastic blocks past their
+/// travel floor, three without the floor or without plastic blocks
+/// (docs/method.md 2.9b, "Two windows with plastic blocks").
+#[test]
+fn plastic_blocks_slide_on_two_windows_only_past_a_travel_floor() {
+    use cdem::drivers::failure::{sliding_rule, PLASTIC_SLIDING_WINDOWS, SLIDING_WINDOWS};
+    use cdem::scene::FailureParams;
+    let model = |path: &str| {
+        let scene = cdem::scene::Scene::load(std::path::Path::new(path)).expect("scene");
+        cdem::drivers::build_model(&scene).expect("model")
+    };
+    let plastic = model("verification/plastic/griffiths-lane-1/gl1-hex.toml");
+    let elastic = model("verification/plastic/griffiths-lane-1/gl1-hex-joints.toml");
+    assert!(plastic.has_plastic_blocks() && !elastic.has_plastic_blocks());
+    let rule = |m: &cdem::model::Model, travel: Option<f64>| {
+        let params = FailureParams { sliding_travel: travel, ..Default::default() };
+        let u = vec![0.0; 3 * m.n_nodes()];
+        let r = sliding_rule(m, &u, &params);
+        (r.windows, r.travel)
+    };
+    assert_eq!(PLASTIC_SLIDING_WINDOWS, 2);
+    assert_eq!(rule(&plastic, None), (PLASTIC_SLIDING_WINDOWS, 0.01), "1e-3 H on the 10 m slope");
+    assert_eq!(rule(&plastic, Some(0.05)), (PLASTIC_SLIDING_WINDOWS, 0.05));
+    assert_eq!(rule(&plastic, Some(0.0)), (SLIDING_WINDOWS, 0.0), "no floor: three windows");
+    assert_eq!(rule(&elastic, None), (SLIDING_WINDOWS, 0.0));
+    assert_eq!(rule(&elastic, Some(0.05)), (SLIDING_WINDOWS, 0.05));
+}
+
 /// Elastic, the plastic element's forces (deviatoric per tetrahedron plus
 /// the cell-averaged pressure) are its mixed stiffness times the
 /// displacement: the kernel and the phase-1 `K_e` of a plastic block agree.

@@ -60,10 +60,11 @@ pub struct FailureResult {
 pub const SLIDING_WINDOW_CROSSINGS: f64 = 10.0;
 /// Windows in a row with a non-decaying displacement rate that decide sliding.
 pub const SLIDING_WINDOWS: usize = 3;
-/// The same with plastic blocks. Their rule decides only past the travel
-/// floor ([`PLASTIC_SLIDING_TRAVEL`]), which is what keeps it from calling
-/// a mass that is still settling; there a third window only delays the
-/// call. Two windows (two rising increments, or the last two summing to at
+/// The same with plastic blocks and a travel floor (by default
+/// [`PLASTIC_SLIDING_TRAVEL`]; a scene's `sliding_travel = 0` keeps
+/// [`SLIDING_WINDOWS`]). Their rule decides only past that floor, which is
+/// what keeps it from calling a mass that is still settling; there a third
+/// window only delays the call. Two windows (two rising increments, or the last two summing to at
 /// least the two before) took the paper slope's search from 29,562 to
 /// 24,873 steps at the same factor and bracket, and of the 19 plastic
 /// factors of `cdem reproduce --published-slopes` moved two, each down by
@@ -109,19 +110,22 @@ pub fn phase_plan(
 /// The sliding rule of phase 2 from the elastic displacement `u_elastic`.
 pub fn sliding_rule<'a>(model: &'a Model, u_elastic: &'a [f64], params: &FailureParams) -> Sliding<'a> {
     let (lo, hi) = model.bounds();
+    let plastic = model.has_plastic_blocks();
+    let travel = match (params.sliding_travel, plastic) {
+        (Some(t), _) => t,
+        (None, true) => PLASTIC_SLIDING_TRAVEL * (hi[2] - lo[2]).max(0.0),
+        (None, false) => 0.0,
+    };
     let mut rule = Sliding {
         reference: u_elastic,
         weights: &model.mass,
         window: ((SLIDING_WINDOW_CROSSINGS * crossing_elements(model)).ceil() as usize).max(10),
-        windows: if model.has_plastic_blocks() { PLASTIC_SLIDING_WINDOWS } else { SLIDING_WINDOWS },
+        // Two windows lean on the travel floor: without one, three.
+        windows: if plastic && travel > 0.0 { PLASTIC_SLIDING_WINDOWS } else { SLIDING_WINDOWS },
         floor: 0.0,
         displacement: params.sliding_displacement.unwrap_or(f64::INFINITY),
-        travel: match (params.sliding_travel, model.has_plastic_blocks()) {
-            (Some(t), _) => t,
-            (None, true) => PLASTIC_SLIDING_TRAVEL * (hi[2] - lo[2]).max(0.0),
-            (None, false) => 0.0,
-        },
-        steady: model.has_plastic_blocks(),
+        travel,
+        steady: plastic,
     };
     let zero = vec![0.0; u_elastic.len()];
     rule.floor = SLIDING_FLOOR * Sliding { reference: &zero, ..rule }.mean_displacement(u_elastic);
