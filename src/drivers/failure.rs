@@ -64,15 +64,15 @@ pub const SLIDING_WINDOWS: usize = 3;
 /// [`PLASTIC_SLIDING_TRAVEL`]; a scene's `sliding_travel = 0` keeps
 /// [`SLIDING_WINDOWS`]). Their rule decides only past that floor, which is
 /// what keeps it from calling a mass that is still settling; there a third
-/// window only delays the call. Two windows (two rising increments, or the last two summing to at
-/// least the two before) took the paper slope's search from 29,562 to
-/// 24,873 steps at the same factor and bracket, and of the 19 plastic
-/// factors of `cdem reproduce --published-slopes` moved two, each down by
-/// one bracket width and toward the published FE strength reduction
-/// (Arai & Tagyo's hexahedra 1.4502 to 1.4404, Yamagami & Ueta's prisms
-/// 1.3525 to 1.3428): a trial the rule now calls sliding could at worst
-/// have come to rest later, the conservative side (references/plastic.md,
-/// "2026-12-06 (sixteenth)").
+/// window only delays the call. Two windows (two rising increments, or the
+/// last two summing to at least the two before) took the paper slope's
+/// search from 29,562 to 24,873 steps at the same factor and bracket, and
+/// of the 19 plastic factors of `cdem reproduce --published-slopes` moved
+/// two, each down by one bracket width and toward the published FE
+/// strength reduction (Arai & Tagyo's hexahedra 1.4502 to 1.4404, Yamagami
+/// & Ueta's prisms 1.3525 to 1.3428): a trial the rule now calls sliding
+/// could at worst have come to rest later, the conservative side
+/// (references/plastic.md, "2026-12-06 (sixteenth)").
 pub const PLASTIC_SLIDING_WINDOWS: usize = 2;
 /// Increments of the mean displacement per window below this fraction of the
 /// mean elastic displacement (phase 1) are rest. It was 1e-3: the slip-surface

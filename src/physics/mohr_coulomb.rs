@@ -531,7 +531,7 @@ pub fn lanes_of(sigma: &[[f64; 6]], n: usize) -> Lanes<6> {
     comp
 }
 
-/// [`principal_values`] of the first `n` lanes of `sigma` (zero beyond
+/// `principal_values` of the first `n` lanes of `sigma` (zero beyond
 /// them): loops the compiler vectorizes.
 #[inline(always)]
 pub fn principal_lanes(sigma: &Lanes<6>, n: usize) -> Lanes<3> {
