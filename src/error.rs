@@ -110,6 +110,10 @@ pub enum SolveError {
     /// `p . K p <= 0`, so the elastic stiffness is not positive definite.
     #[error("conjugate gradients, iteration {iteration}: p.Kp = {pkp:.3e} <= 0: the elastic stiffness is not positive definite (a part held by no [[boundary]] group, or a mechanism)")]
     NotPositiveDefiniteCg { iteration: usize, pkp: f64 },
+    /// Runout: a vertex deeper inside another block than `[runout]
+    /// max_penetration` allows: a contact the detection missed.
+    #[error("step {step}: a vertex of element {a} is {depth:.3e} m inside element {b} (deeper than [runout] max_penetration): a missed contact; lower the time step or raise the contact stiffness")]
+    Interpenetration { step: usize, a: u64, b: u64, depth: f64 },
     #[error("the model has zero stiffness or zero mass: no stable time step")]
     NoTimeStep,
     /// Implicit FEM: the fixities leave a rigid-body motion free.

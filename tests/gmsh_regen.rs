@@ -1,7 +1,7 @@
 //! Every committed case mesh is what its `.geo` makes: gmsh regenerates each
 //! `verification/cases/*/*.geo`, `verification/extreme/*.geo`,
 //! `verification/study/*.geo`, `verification/tutorial/*.geo` and
-//! `verification/plastic/*/*.geo` (every `.geo` with a committed `.msh` beside it)
+//! `verification/plastic/*/*.geo` and `verification/runout/*.geo` (every `.geo` with a committed `.msh` beside it)
 //! into a temporary directory and the result must equal the committed `.msh`
 //! (connectivity, tags and groups exactly, node coordinates within 1e-9 of the
 //! model size). Without gmsh on PATH the test

@@ -24,6 +24,8 @@
 //!   use; perf's LEM cases and paper slope are [`LEM_PAPER_SLOPE_EXPLICIT`],
 //!   [`LEM_ACADS_1A`] and [`SLOPE`].
 
+mod runout;
+pub use runout::*;
 use std::path::Path;
 
 use crate::analysis::slip::SlipCircle;
@@ -961,7 +963,7 @@ pub fn slip_arc() -> Vec<(f64, f64)> {
 // row is computed from are declared by id prefix in
 // `cdem::harness::report::inputs::DECLARED` (a new prefix needs an entry).
 
-const fn spec(
+pub(crate) const fn spec(
     id: &'static str,
     case: &'static str,
     quantity: &'static str,
@@ -1167,6 +1169,7 @@ pub fn rows() -> Vec<RowSpec> {
     let mut all: Vec<RowSpec> = ROWS[..6].to_vec();
     all.extend(extreme_cases().iter().flat_map(|c| EXTREME_SOLVERS.map(|s| c.row_spec_for(s))));
     all.extend_from_slice(&ROWS[6..]);
+    all.extend_from_slice(RUNOUT_ROWS);
     all
 }
 

@@ -11,12 +11,16 @@
 //! | 17  | [`spring::tension_cutoff`]: `F_n >= T A` -> `F_n = F_s = 0` |
 //! | 18  | [`spring::mohr_coulomb`]: `|F_s| > P tan(phi) + c A` -> `|F_s| = P tan(phi)` |
 //! | 15, 17-18 | [`joint::CoulombJoint`]: one breakable spring with its history (brittle or ductile) |
+//! | runout | [`corotation::corotated_force`]: `f = R K_e u'`, a block's rotation taken out |
+//! | runout | [`contact::contact_force`]: a vertex-face penalty and Coulomb slider |
 //!
 //! The two constitutive seams: [`joint`] (a [`joint::JointLaw`] reads a
 //! spring, its strength in [`joint::JointState`] and its history) and
 //! [`material`] (a [`material::MaterialLaw`] per element group; linear
 //! elastic condenses to `K_e`).
 
+pub mod contact;
+pub mod corotation;
 pub mod damping;
 pub mod elasticity;
 pub mod element;

@@ -23,6 +23,7 @@ pub mod params;
 pub mod pcg;
 pub mod plan;
 pub mod relax;
+pub mod runout;
 pub mod timestep;
 
 pub use inertia::Inertia;

@@ -18,7 +18,7 @@ pub const NO_GMSH: &str = "gmsh is not on PATH (it must be in CI)";
 /// Every `.geo` with a committed `.msh` beside it, under `root`, sorted.
 pub fn geos(root: &Path) -> Vec<PathBuf> {
     let v = root.join("verification");
-    let mut dirs = vec![v.join("extreme"), v.join("study"), v.join("tutorial"), v.join("joints")];
+    let mut dirs = vec![v.join("extreme"), v.join("study"), v.join("tutorial"), v.join("joints"), v.join("runout")];
     for parent in ["cases", "plastic"] {
         dirs.extend(std::fs::read_dir(v.join(parent)).into_iter().flatten().flatten().map(|e| e.path()));
     }

@@ -12,6 +12,7 @@ pub mod joints;
 pub mod lem_water;
 pub mod meshes;
 pub mod plastic;
+pub mod runout;
 pub mod skfem;
 pub mod slope_failure;
 pub mod srm;

@@ -1,0 +1,866 @@
+//! Runout: the blocks in real time after the slope has failed (docs/method.md
+//! 2.13), the paper's own future work (its section 6). Large displacement,
+//! contacts found anew as blocks move, and an energy budget that must close.
+//!
+//! One step is a short list of named stages:
+//! 1. **blocks**: each element's corotational force and rotation
+//!    ([`corotated_force`]), its strain energy;
+//! 2. **joints**: the springs that still bond two parts of one intact body,
+//!    by the joint law with the normal turned by the block's rotation;
+//! 3. **contacts**: re-detect where a node has moved more than half the
+//!    tolerance ([`contact`]'s broad phase), then every vertex-face contact's
+//!    penalty and Coulomb force ([`contact_force`]), with the interpenetration
+//!    check;
+//! 4. **update**: damping (none, local or mass-proportional Rayleigh) and
+//!    central differences with the physical masses (no mass scaling);
+//! 5. **monitor**: the energy terms, non-finite state, the moving mass.
+//!
+//! Bodies: the elements joined by shared nodes or by bonded springs (intact,
+//! with a strength above zero) form one intact body, found by union-find.
+//! Contacts act only between different bodies. A spring between two bodies
+//! (it has failed, or its joint is purely frictional: no tension, no
+//! cohesion) hands over to the contact model, which carries its interface's
+//! stiffness and friction; a pair of blocks that never shared a face takes
+//! the `[runout]` contact's.
+
+pub mod contact;
+
+use std::collections::BTreeMap;
+
+use rayon::prelude::*;
+
+use crate::error::SolveError;
+use crate::model::Model;
+use crate::physics::contact::{contact_force, ContactHistory, ContactLaw};
+use crate::physics::corotation::{corotated_force, rotate, rotation_angle, Mat3, IDENTITY};
+use crate::physics::joint::{CoulombJoint, JointLaw, JointState};
+use crate::physics::spring::{spring_contact_force, Spring, SpringState, SpringStatus};
+use contact::{block_box, sweep, vertex_face, Faces};
+
+/// Damping in runout: a physical choice, stated in the scene.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum RunoutDamping {
+    /// None: the only dissipation is friction and joint failure.
+    None,
+    /// Cundall's local damping, `f_d = alpha |f_unbal| sign(v)` per component.
+    Local { alpha: f64 },
+    /// Mass-proportional Rayleigh damping `f_d = 2 xi omega m v`: the ratio
+    /// `xi` of critical at the angular frequency `omega` (rad/s).
+    Rayleigh { ratio: f64, omega: f64 },
+}
+
+/// Stiffness and friction of the contacts between blocks that never shared
+/// a face (per unit area: Pa/m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactDefaults {
+    pub normal_stiffness: f64,
+    pub shear_stiffness: f64,
+    pub friction_deg: f64,
+}
+
+/// The settings of a runout.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunoutParams {
+    /// Time to run at most (s).
+    pub duration: f64,
+    pub damping: RunoutDamping,
+    /// Fraction of the stable time step (Gershgorin bound).
+    pub safety: f64,
+    /// Detection reach (m): vertices within it of a face are contacts-to-be;
+    /// the broad phase runs again once a node has moved half of it.
+    pub tolerance: f64,
+    /// A vertex deeper than this inside another block is a missed contact (m).
+    pub max_penetration: f64,
+    /// The mass is at rest when no free node moves faster (m/s) ...
+    pub rest_velocity: f64,
+    /// ... for this long (s). Zero: run the whole duration.
+    pub rest_time: f64,
+    pub contact: ContactDefaults,
+}
+
+/// The energy terms of a runout since its start (J). The budget:
+/// `gravity = kinetic + elastic + friction + joints + damping`, each term
+/// computed on its own (none as the remainder).
+#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
+pub struct Energy {
+    /// Work of the external loads, `f_ext . (u - u_0)`.
+    pub gravity: f64,
+    /// `sum m v^2 / 2` at the step (central-difference velocity), less the start's.
+    pub kinetic: f64,
+    /// Strain energy of the blocks, the bonded springs and the contacts, less the start's.
+    pub elastic: f64,
+    /// Slip work of the contacts.
+    pub friction: f64,
+    /// Work the bonded springs took and did not store (slip, failure).
+    pub joints: f64,
+    /// Work of the damping forces.
+    pub damping: f64,
+}
+
+impl Energy {
+    /// `gravity - (kinetic + elastic + friction + joints + damping)`.
+    pub fn residual(&self) -> f64 {
+        self.gravity - (self.kinetic + self.elastic + self.friction + self.joints + self.damping)
+    }
+    /// `|residual| / |gravity|` (0 if no work was done).
+    pub fn closure(&self) -> f64 {
+        if self.gravity.abs() > 0.0 {
+            self.residual().abs() / self.gravity.abs()
+        } else {
+            0.0
+        }
+    }
+}
+
+/// What changes in a runout.
+#[derive(Debug, Clone)]
+pub struct RunoutState {
+    /// Displacement from the model's rest coordinates (m), `3 i + d`.
+    pub u: Vec<f64>,
+    /// Velocity at the last half step (m/s).
+    pub v: Vec<f64>,
+    pub springs: SpringState,
+    pub joints: JointState,
+    pub step: usize,
+    pub time: f64,
+}
+
+/// One step's measures.
+#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
+pub struct RunoutStep {
+    pub step: usize,
+    pub time: f64,
+    /// Kinetic energy at the step (J).
+    pub kinetic: f64,
+    /// Largest speed of a free node (m/s).
+    pub max_speed: f64,
+    pub contacts: usize,
+    pub sliding: usize,
+    /// Whether the broad phase ran this step.
+    pub remapped: bool,
+    /// The energy terms up to this step.
+    pub energy: Energy,
+}
+
+/// A contact-to-be of the last mapping: a vertex (node) against one block's
+/// near triangles.
+#[derive(Debug, Clone)]
+struct Candidate {
+    node: u32,
+    /// The block the vertex belongs to (for the law).
+    vertex_elem: u32,
+    face_elem: u32,
+    tris: std::ops::Range<usize>,
+}
+
+/// The runout engine: what is built once, and the scratch of a step.
+pub struct Runout {
+    params: RunoutParams,
+    dt: f64,
+    mass: Vec<f64>,
+    faces: Faces,
+    /// Per node: the elements holding it and its local corner there.
+    node_elems: Vec<Vec<(u32, u8)>>,
+    /// Per node: its exterior face area (m^2), 0 for a node inside a body.
+    exterior: Vec<bool>,
+    /// The interface of each pair of elements that shared a face at the start.
+    pair_interface: BTreeMap<(u32, u32), u16>,
+    /// Body of each element (union-find over shared nodes and bonded springs).
+    body: Vec<u32>,
+    /// Whether spring `s` bonds (not handed over to the contacts).
+    bonded: Vec<bool>,
+    /// The last mapping: positions then, candidates and their triangles.
+    x_map: Vec<[f64; 3]>,
+    mapped: bool,
+    candidates: Vec<Candidate>,
+    cand_tris: Vec<u16>,
+    /// The forces a released spring left at a node (compression, N; shear on
+    /// the node, N), taken up by that node's first new contact.
+    pending: BTreeMap<u32, ContactHistory>,
+    /// Contact history keyed by (node, body of the face).
+    history: BTreeMap<(u32, u32), ContactHistory>,
+    /// Scratch.
+    f_elem: Vec<f64>,
+    rotations: Vec<Mat3>,
+    elem_energy: Vec<f64>,
+    f_int: Vec<f64>,
+    spring_force_prev: Vec<[f64; 3]>,
+    spring_input: f64,
+    spring_e0: Option<f64>,
+    // Energy bookkeeping.
+    energy: Energy,
+    kinetic0: f64,
+    elastic0: Option<f64>,
+    u0: Vec<f64>,
+    fixed_elem: Vec<bool>,
+    /// Volume of each element (m^3).
+    volume: Vec<f64>,
+    pub remaps: usize,
+}
+
+/// The result of a runout.
+#[derive(Debug, Clone)]
+pub struct RunoutEnd {
+    /// Steps taken, time run (s).
+    pub steps: usize,
+    pub time: f64,
+    /// The time the mass came to rest (s), if it did.
+    pub rest_at: Option<f64>,
+    pub peak_speed: f64,
+    pub energy: Energy,
+}
+
+impl Runout {
+    /// The engine for `model` from the state the failure phase left (`springs`
+    /// and `joints`: which springs have failed and what they can carry).
+    pub fn new(
+        model: &Model,
+        params: RunoutParams,
+        springs: &SpringState,
+        joints: &JointState,
+        u: &[f64],
+    ) -> Result<Self, SolveError> {
+        let el = &model.elements;
+        let n = model.n_nodes();
+        let mut node_elems: Vec<Vec<(u32, u8)>> = vec![Vec::new(); n];
+        for e in 0..el.len() {
+            for (c, &node) in el.corners(e).iter().enumerate() {
+                node_elems[node as usize].push((e as u32, c as u8));
+            }
+        }
+        let mut faces = Faces::build(model);
+        // Exterior faces: those no other element holds with the same nodes.
+        let mut count: BTreeMap<Vec<u32>, u32> = BTreeMap::new();
+        let face_key = |e: usize, f: usize| {
+            let corners = el.corners(e);
+            let mut k: Vec<u32> = el.kind[e].faces()[f].iter().map(|&c| corners[c]).collect();
+            k.sort_unstable();
+            k
+        };
+        for e in 0..el.len() {
+            for f in 0..el.kind[e].faces().len() {
+                *count.entry(face_key(e, f)).or_default() += 1;
+            }
+        }
+        let mut exterior = vec![false; n];
+        for e in 0..el.len() {
+            let fp = faces.face_ptr[e];
+            for f in 0..el.kind[e].faces().len() {
+                if count[&face_key(e, f)] > 1 {
+                    faces.face_share[fp + f] = 0.0;
+                } else {
+                    for &c in el.kind[e].faces()[f] {
+                        exterior[el.corners(e)[c] as usize] = true;
+                    }
+                }
+            }
+        }
+        // Interior faces take no part in contact: drop their triangles.
+        let mut tri = Vec::new();
+        let mut tri_ptr = vec![0];
+        for e in 0..el.len() {
+            let fp = faces.face_ptr[e];
+            tri.extend(faces.triangles(e).iter().filter(|t| faces.face_share[fp + t.face as usize] > 0.0).copied());
+            tri_ptr.push(tri.len());
+        }
+        faces.tri = tri;
+        faces.tri_ptr = tri_ptr;
+        let elem_of = |node: u32| node_elems[node as usize].first().map(|&(e, _)| e).unwrap_or(0);
+        let mut pair_interface = BTreeMap::new();
+        for s in 0..model.springs.len() {
+            let (a, b) = (elem_of(model.springs.a[s]), elem_of(model.springs.b[s]));
+            pair_interface.entry((a.min(b), a.max(b))).or_insert(model.springs.interface[s]);
+        }
+        // Time step: the elements' and springs' row sums, and the contacts'
+        // penalty at every exterior node.
+        let mut rows = crate::solver::timestep::stiffness_row_sums(model);
+        let kn_max = contact_kn_max(model, &params.contact);
+        let mut area = vec![0.0; n];
+        for e in 0..el.len() {
+            let fp = faces.face_ptr[e];
+            for (f, fc) in el.kind[e].faces().iter().enumerate() {
+                for &c in fc.iter() {
+                    area[el.corners(e)[c] as usize] += faces.face_share[fp + f];
+                }
+            }
+        }
+        for i in 0..n {
+            rows[i] += 4.0 * kn_max * area[i];
+        }
+        let lambda = rows.iter().zip(&model.mass).map(|(r, m)| r / m).fold(0.0, f64::max);
+        let amplification = match params.damping {
+            RunoutDamping::Local { alpha } => 1.0 + alpha,
+            _ => 1.0,
+        };
+        if !(lambda > 0.0 && lambda.is_finite()) {
+            return Err(SolveError::NoTimeStep);
+        }
+        let dt = params.safety * 2.0 / (amplification * lambda).sqrt();
+        let fixed_elem = (0..el.len())
+            .map(|e| el.corners(e).iter().all(|&c| (0..3).all(|d| model.fixed[3 * c as usize + d])))
+            .collect();
+        let mut me = Self {
+            params,
+            dt,
+            mass: model.mass.clone(),
+            faces,
+            node_elems,
+            exterior,
+            pair_interface,
+            body: Vec::new(),
+            bonded: vec![true; model.springs.len()],
+            x_map: Vec::new(),
+            mapped: false,
+            candidates: Vec::new(),
+            cand_tris: Vec::new(),
+            history: BTreeMap::new(),
+            pending: BTreeMap::new(),
+            f_elem: vec![0.0; 24 * el.len()],
+            rotations: vec![IDENTITY; el.len()],
+            elem_energy: vec![0.0; el.len()],
+            f_int: vec![0.0; 3 * n],
+            spring_force_prev: vec![[0.0; 3]; model.springs.len()],
+            spring_input: 0.0,
+            spring_e0: None,
+            energy: Energy::default(),
+            kinetic0: 0.0,
+            elastic0: None,
+            u0: Vec::new(),
+            fixed_elem,
+            volume: el.volume.clone(),
+            remaps: 0,
+        };
+        me.hand_over(model, springs, joints, u);
+        Ok(me)
+    }
+
+    /// The time step (s).
+    pub fn dt(&self) -> f64 {
+        self.dt
+    }
+
+    pub fn params(&self) -> &RunoutParams {
+        &self.params
+    }
+
+    /// The energy terms so far.
+    pub fn energy(&self) -> Energy {
+        self.energy
+    }
+
+    /// The rotation of each element now (from the last step).
+    pub fn rotations(&self) -> &[Mat3] {
+        &self.rotations
+    }
+
+    /// The body of each element (elements of one body move as one continuum).
+    pub fn bodies(&self) -> &[u32] {
+        &self.body
+    }
+
+    /// Decides which springs still bond and regroups the bodies: a spring
+    /// bonds while it is intact and its joint has a tensile strength or a
+    /// cohesion; bodies are the elements joined by shared nodes or bonds.
+    /// Returns whether anything changed.
+    fn hand_over(&mut self, model: &Model, springs: &SpringState, joints: &JointState, u: &[f64]) -> bool {
+        let el = &model.elements;
+        let mut changed = self.body.is_empty();
+        for s in 0..model.springs.len() {
+            let bonds = springs.status[s] == SpringStatus::Intact
+                && joints.strength[s].is_none_or(|st| st.tensile > 0.0 || st.cohesion > 0.0);
+            if self.bonded[s] && !bonds {
+                self.release(model, springs, s, u);
+                changed = true;
+            }
+        }
+        if !changed {
+            return false;
+        }
+        let mut parent: Vec<u32> = (0..el.len() as u32).collect();
+        fn find(p: &mut [u32], mut i: u32) -> u32 {
+            while p[i as usize] != i {
+                p[i as usize] = p[p[i as usize] as usize];
+                i = p[i as usize];
+            }
+            i
+        }
+        let union = |p: &mut Vec<u32>, a: u32, b: u32| {
+            let (ra, rb) = (find(p, a), find(p, b));
+            if ra != rb {
+                let (lo, hi) = (ra.min(rb), ra.max(rb));
+                p[hi as usize] = lo;
+            }
+        };
+        for list in &self.node_elems {
+            for w in list.windows(2) {
+                union(&mut parent, w[0].0, w[1].0);
+            }
+        }
+        for s in (0..model.springs.len()).filter(|&s| self.bonded[s]) {
+            let a = self.node_elems[model.springs.a[s] as usize][0].0;
+            let b = self.node_elems[model.springs.b[s] as usize][0].0;
+            union(&mut parent, a, b);
+        }
+        self.body = (0..el.len() as u32).map(|e| find(&mut parent, e)).collect();
+        // A spring between two bodies hands over even if it is intact.
+        for s in 0..model.springs.len() {
+            let a = self.node_elems[model.springs.a[s] as usize][0].0;
+            let b = self.node_elems[model.springs.b[s] as usize][0].0;
+            if self.bonded[s] && self.body[a as usize] != self.body[b as usize] {
+                self.release(model, springs, s, u);
+            }
+        }
+        self.mapped = false;
+        true
+    }
+
+    /// Spring `s` stops bonding: its shear force is kept for the contacts its
+    /// two nodes make next ([`Self::pending_shear`]), so that a joint that
+    /// was holding a block by friction hands over without a jolt.
+    fn release(&mut self, model: &Model, springs: &SpringState, s: usize, u: &[f64]) {
+        self.bonded[s] = false;
+        let sp = &model.springs;
+        let (a, b) = (sp.a[s] as usize, sp.b[s] as usize);
+        let d = [0, 1, 2].map(|k| u[3 * b + k] - u[3 * a + k]);
+        let (f_n, f_s) = crate::physics::spring::spring_force(sp.kn[s], sp.ks[s], sp.normal[s], d, springs.slip[s]);
+        let open = springs.status[s] != SpringStatus::Intact && f_n > 0.0;
+        if open {
+            return;
+        }
+        for (node, sign) in [(a, 1.0), (b, -1.0)] {
+            let e = self.pending.entry(node as u32).or_default();
+            e.normal += (-f_n).max(0.0);
+            for k in 0..3 {
+                e.shear[k] += sign * f_s[k];
+            }
+        }
+    }
+
+    /// The law of a contact between blocks `a` and `b` at a vertex of area `area`.
+    fn law(&self, model: &Model, a: u32, b: u32, area: f64) -> ContactLaw {
+        let d = &self.params.contact;
+        let (kn, ks, tan_phi) = match self.pair_interface.get(&(a.min(b), a.max(b))) {
+            Some(&i) => {
+                let p = &model.interfaces[i as usize].props;
+                let tan_phi = p.strength.map_or(d.friction_deg.to_radians().tan(), |s| s.tan_phi);
+                match p.normal_modulus.is_finite() {
+                    true => (p.normal_modulus / p.thickness, p.shear_modulus / p.thickness, tan_phi),
+                    false => (d.normal_stiffness, d.shear_stiffness, tan_phi),
+                }
+            }
+            None => (d.normal_stiffness, d.shear_stiffness, d.friction_deg.to_radians().tan()),
+        };
+        ContactLaw { kn: kn * area, ks: ks * area, tan_phi, cohesion: 0.0 }
+    }
+
+    /// The broad phase and the candidates' near triangles, from positions `x`.
+    fn map(&mut self, model: &Model, x: &[[f64; 3]]) {
+        let el = &model.elements;
+        let tol = self.params.tolerance;
+        let boxes: Vec<_> =
+            (0..el.len()).map(|e| block_box(el.corners(e).iter().map(|&c| x[c as usize]), 0.5 * tol)).collect();
+        let body = &self.body;
+        let fixed = &self.fixed_elem;
+        let pairs = sweep(&boxes, |a, b| body[a] != body[b] && !(fixed[a] && fixed[b]));
+        let mut candidates = Vec::new();
+        let mut tris = Vec::new();
+        let mut seen = std::collections::BTreeSet::new();
+        for &(a, b) in &pairs {
+            for (v_elem, f_elem) in [(a, b), (b, a)] {
+                let (lo, hi) = boxes[f_elem as usize];
+                let corners_f: Vec<[f64; 3]> = el.corners(f_elem as usize).iter().map(|&c| x[c as usize]).collect();
+                for &node in el.corners(v_elem as usize) {
+                    let p = x[node as usize];
+                    if !self.exterior[node as usize]
+                        || (0..3).any(|d| p[d] < lo[d] - 0.5 * tol || p[d] > hi[d] + 0.5 * tol)
+                        || !seen.insert((node, f_elem))
+                    {
+                        continue;
+                    }
+                    let start = tris.len();
+                    for (k, t) in self.faces.triangles(f_elem as usize).iter().enumerate() {
+                        let face = self.faces.face_corners[self.faces.face_ptr[f_elem as usize] + t.face as usize];
+                        let (tlo, thi) =
+                            block_box(face.iter().map(|&c| corners_f[c]), tol + self.params.max_penetration);
+                        if (0..3).all(|d| p[d] >= tlo[d] && p[d] <= thi[d]) {
+                            tris.push(k as u16);
+                        }
+                    }
+                    if tris.len() > start {
+                        candidates.push(Candidate {
+                            node,
+                            vertex_elem: v_elem,
+                            face_elem: f_elem,
+                            tris: start..tris.len(),
+                        });
+                    }
+                }
+            }
+        }
+        let body = &self.body;
+        candidates.sort_by_key(|c: &Candidate| (c.node, body[c.face_elem as usize], c.face_elem));
+        self.candidates = candidates;
+        self.cand_tris = tris;
+        self.x_map = x.to_vec();
+        self.mapped = true;
+        self.remaps += 1;
+    }
+
+    /// One step (see the module doc).
+    pub fn step(&mut self, model: &Model, st: &mut RunoutState) -> Result<RunoutStep, SolveError> {
+        let el = &model.elements;
+        let n = model.n_nodes();
+        if self.u0.is_empty() {
+            self.u0 = st.u.clone();
+            self.kinetic0 = (0..3 * n).map(|k| 0.5 * self.mass[k / 3] * st.v[k] * st.v[k]).sum();
+        }
+        let x: Vec<[f64; 3]> = (0..n).map(|i| [0, 1, 2].map(|d| model.x0[i][d] + st.u[3 * i + d])).collect();
+
+        // 1. Blocks: corotational forces.
+        let fe = &mut self.f_elem;
+        let rot = &mut self.rotations;
+        let en = &mut self.elem_energy;
+        fe.par_chunks_mut(24).zip(rot.par_iter_mut()).zip(en.par_iter_mut()).enumerate().for_each(
+            |(e, ((f, r), w))| {
+                let corners = el.corners(e);
+                let x0: Vec<[f64; 3]> = corners.iter().map(|&c| model.x0[c as usize]).collect();
+                let xe: Vec<[f64; 3]> = corners.iter().map(|&c| x[c as usize]).collect();
+                let c = corotated_force(el.stiffness(e), &x0, &xe, &mut f[..3 * corners.len()]);
+                (*r, *w) = (c.rotation, c.energy);
+            },
+        );
+        let mut f_int = std::mem::take(&mut self.f_int);
+        f_int.resize(3 * n, 0.0);
+        f_int.fill(0.0);
+        for e in 0..el.len() {
+            for (c, &node) in el.corners(e).iter().enumerate() {
+                for d in 0..3 {
+                    f_int[3 * node as usize + d] += self.f_elem[24 * e + 3 * c + d];
+                }
+            }
+        }
+        let mut elastic: f64 = self.elem_energy.iter().sum();
+
+        // 2. Joints: bonded springs, the normal turned with block a.
+        let law = CoulombJoint;
+        let sp = &model.springs;
+        let mut spring_energy = 0.0;
+        let mut input = 0.0;
+        for s in (0..sp.len()).filter(|&s| self.bonded[s]) {
+            let (a, b) = (sp.a[s] as usize, sp.b[s] as usize);
+            let ea = self.node_elems[a][0].0 as usize;
+            let normal = rotate(&self.rotations[ea], sp.normal[s]);
+            let spring = Spring { kn: sp.kn[s], ks: sp.ks[s], normal, area: sp.area[s] };
+            let d = [0, 1, 2].map(|k| st.u[3 * b + k] - st.u[3 * a + k]);
+            let fa = match &st.joints.strength[s] {
+                Some(strength) => law.force(&spring, d, strength, &mut st.springs.slip[s], &mut st.springs.status[s]),
+                None => spring_contact_force(sp.kn[s], sp.ks[s], normal, d, st.springs.slip[s], st.springs.status[s]),
+            };
+            for k in 0..3 {
+                f_int[3 * a + k] -= fa[k];
+                f_int[3 * b + k] += fa[k];
+            }
+            // Energy put in over the step (trapezoid) and stored now.
+            let dd = [0, 1, 2].map(|k| (st.v[3 * b + k] - st.v[3 * a + k]) * self.dt);
+            let prev = self.spring_force_prev[s];
+            input += (0..3).map(|k| 0.5 * (prev[k] + fa[k]) * dd[k]).sum::<f64>();
+            self.spring_force_prev[s] = fa;
+            let fn_ = fa[0] * normal[0] + fa[1] * normal[1] + fa[2] * normal[2];
+            let fs2 = (0..3).map(|k| (fa[k] - fn_ * normal[k]).powi(2)).sum::<f64>();
+            spring_energy += 0.5 * fn_ * fn_ / sp.kn[s] + if sp.ks[s] > 0.0 { 0.5 * fs2 / sp.ks[s] } else { 0.0 };
+        }
+        if st.step > 0 {
+            self.spring_input += input;
+        }
+        elastic += spring_energy;
+        // Springs that failed this step hand over from the next.
+        if self.hand_over(model, &st.springs, &st.joints, &st.u) {
+            self.mapped = false;
+        }
+
+        // 3. Contacts.
+        let half = 0.5 * self.params.tolerance;
+        let remap = !self.mapped
+            || (0..n).any(|i| (0..3).map(|d| (x[i][d] - self.x_map[i][d]).powi(2)).sum::<f64>() > half * half);
+        if remap {
+            self.map(model, &x);
+        }
+        let dt = self.dt;
+        // 3a. Narrow phase: where each candidate vertex touches its block.
+        let corners_of = |e: usize| -> Vec<[f64; 3]> { el.corners(e).iter().map(|&c| x[c as usize]).collect() };
+        let found: Vec<Option<contact::FacePoint>> = self
+            .candidates
+            .par_iter()
+            .map(|c| self.near_face(c.face_elem as usize, &corners_of(c.face_elem as usize), x[c.node as usize], c))
+            .collect();
+        // 3b. One contact per vertex and body (candidates are sorted so): the
+        // face point of the largest gap, of equals the most squarely inside;
+        // the shear history follows the vertex across the body's faces.
+        let mut groups: Vec<(std::ops::Range<usize>, usize)> = Vec::new();
+        let same = |i: usize, j: usize| {
+            let (a, b) = (&self.candidates[i], &self.candidates[j]);
+            a.node == b.node && self.body[a.face_elem as usize] == self.body[b.face_elem as usize]
+        };
+        let band = 1e-9 * self.params.tolerance;
+        let mut i = 0;
+        while i < found.len() {
+            let mut j = i + 1;
+            while j < found.len() && same(i, j) {
+                j += 1;
+            }
+            let mut best: Option<usize> = None;
+            for k in i..j {
+                let Some(fp) = &found[k] else { continue };
+                let better = match best.and_then(|b| found[b].as_ref()) {
+                    None => true,
+                    Some(b) => fp.gap > b.gap + band || (fp.gap >= b.gap - band && fp.inside > b.inside),
+                };
+                if better {
+                    best = Some(k);
+                }
+            }
+            if let Some(b) = best {
+                groups.push((i..j, b));
+            }
+            i = j;
+        }
+        // 3c. Each contact's law (its area: the vertex's faces that face the
+        // contact and whose share lies over the other body) and its relative
+        // motion this step.
+        let inputs: Vec<Option<(ContactLaw, [f64; 3])>> = groups
+            .par_iter()
+            .map(|(range, b)| {
+                let cand = &self.candidates[*b];
+                let fp = found[*b].as_ref()?;
+                let over = |point: [f64; 3]| {
+                    range.clone().any(|k| {
+                        let c = &self.candidates[k];
+                        let fe = c.face_elem as usize;
+                        contact::covers(&self.faces, fe, &corners_of(fe), point, fp.normal)
+                    })
+                };
+                let mut area = 0.0;
+                for &(e, c) in &self.node_elems[cand.node as usize] {
+                    let corners = corners_of(e as usize);
+                    area += self.faces.vertex_area(
+                        e as usize,
+                        c as usize,
+                        &self.rotations[e as usize],
+                        &corners,
+                        fp.normal,
+                        &over,
+                    );
+                }
+                if area <= 0.0 {
+                    return None;
+                }
+                // Half: where two faces meet, the vertices of both sides touch.
+                let law = self.law(model, cand.vertex_elem, cand.face_elem, 0.5 * area);
+                let fe = cand.face_elem as usize;
+                let mut vq = [0.0; 3];
+                for i in 0..fp.len as usize {
+                    let node = el.corners(fe)[fp.corners[i] as usize] as usize;
+                    for d in 0..3 {
+                        vq[d] += fp.weights[i] * st.v[3 * node + d];
+                    }
+                }
+                let ds = [0, 1, 2].map(|d| (st.v[3 * cand.node as usize + d] - vq[d]) * dt);
+                Some((law, ds))
+            })
+            .collect();
+        let chosen = groups.iter().zip(inputs).filter_map(|((_, b), input)| {
+            let (law, ds) = input?;
+            let c = &self.candidates[*b];
+            Some((c.node, c.face_elem, law, found[*b]?, ds))
+        });
+        let chosen: Vec<_> = chosen.collect();
+        let mut history = BTreeMap::new();
+        let (mut contacts, mut sliding) = (0, 0);
+        let mut friction = 0.0;
+        for (node, fe, law, fp, ds) in chosen {
+            let key = (node, self.body[fe as usize]);
+            // A new contact (only where the vertex is inside the face) takes
+            // half (the other side's vertex takes the other half) of what a
+            // released spring left at its node.
+            let mut h = match self.history.get(&key) {
+                Some(&h) => h,
+                None if fp.gap < 0.0 => self.pending.remove(&node).map_or_else(ContactHistory::default, |p| {
+                    ContactHistory { normal: 0.5 * p.normal, shear: p.shear.map(|v| 0.5 * v) }
+                }),
+                None => continue,
+            };
+            let r = contact_force(&law, fp.normal, ds, &mut h);
+            if fp.gap < -self.params.max_penetration {
+                let vertex_elem = self.node_elems[node as usize][0].0 as usize;
+                return Err(SolveError::Interpenetration {
+                    step: st.step,
+                    a: el.tag[vertex_elem],
+                    b: el.tag[fe as usize],
+                    depth: -fp.gap,
+                });
+            }
+            if r.normal > 0.0 {
+                contacts += 1;
+                sliding += usize::from(r.slipping);
+                history.insert(key, h);
+            }
+            friction += r.dissipated;
+            elastic += r.energy;
+            let k = 3 * node as usize;
+            for d in 0..3 {
+                f_int[k + d] -= r.force[d];
+            }
+            for i in 0..fp.len as usize {
+                let q = 3 * el.corners(fe as usize)[fp.corners[i] as usize] as usize;
+                for d in 0..3 {
+                    f_int[q + d] += fp.weights[i] * r.force[d];
+                }
+            }
+        }
+        self.history = history;
+
+        // 4. Update: damping and central differences.
+        let mut damping_work = 0.0;
+        let mut kinetic = 0.0;
+        let mut max_speed: f64 = 0.0;
+        for i in 0..n {
+            let mut speed2 = 0.0;
+            for d in 0..3 {
+                let k = 3 * i + d;
+                if model.fixed[k] {
+                    st.v[k] = 0.0;
+                    continue;
+                }
+                let f = model.f_ext[k] - f_int[k];
+                let v_old = st.v[k];
+                let fd = match self.params.damping {
+                    RunoutDamping::None => 0.0,
+                    RunoutDamping::Local { alpha } => crate::physics::damping::local_damping(alpha, f, v_old),
+                    RunoutDamping::Rayleigh { ratio, omega } => 2.0 * ratio * omega * self.mass[i] * v_old,
+                };
+                let v_new = v_old + dt * (f - fd) / self.mass[i];
+                let v_mid = 0.5 * (v_old + v_new);
+                damping_work += fd * v_mid * dt;
+                kinetic += 0.5 * self.mass[i] * v_mid * v_mid;
+                speed2 += v_mid * v_mid;
+                st.v[k] = v_new;
+                st.u[k] += dt * v_new;
+            }
+            max_speed = max_speed.max(speed2.sqrt());
+        }
+        self.f_int = f_int;
+        // 5. Monitor: the energy terms at this step (positions x_n, velocity v_n).
+        if !kinetic.is_finite() || !elastic.is_finite() {
+            let node = (0..st.u.len()).find(|&k| !st.u[k].is_finite() || !st.v[k].is_finite()).unwrap_or(0) / 3;
+            return Err(SolveError::NonFinite { step: st.step, node });
+        }
+        let elastic0 = *self.elastic0.get_or_insert(elastic);
+        self.energy.damping += damping_work;
+        self.energy.friction += friction;
+        // Gravity's work up to x_n: f_ext . (u_n - u_0); u_n is before this step's update.
+        self.energy.gravity = (0..3 * n).map(|k| model.f_ext[k] * (st.u[k] - dt * st.v[k] - self.u0[k])).sum();
+        self.energy.kinetic = kinetic - self.kinetic0;
+        self.energy.elastic = elastic - elastic0;
+        let spring_e0 = *self.spring_e0.get_or_insert(spring_energy);
+        self.energy.joints = self.spring_input - (spring_energy - spring_e0);
+        st.step += 1;
+        st.time += dt;
+        Ok(RunoutStep {
+            step: st.step,
+            time: st.time,
+            kinetic,
+            max_speed,
+            contacts,
+            sliding,
+            remapped: remap,
+            energy: self.energy,
+        })
+    }
+
+    /// The triangle a candidate vertex touches now, among its near ones.
+    fn near_face(&self, fe: usize, corners: &[[f64; 3]], p: [f64; 3], cand: &Candidate) -> Option<contact::FacePoint> {
+        let mut normals = Vec::with_capacity(12);
+        for &(e, c) in &self.node_elems[cand.node as usize] {
+            self.faces.vertex_normals(e as usize, c as usize, &self.rotations[e as usize], &mut normals);
+        }
+        vertex_face(&self.faces, fe, corners, p, self.params.tolerance, &self.cand_tris[cand.tris.clone()], &normals)
+    }
+
+    /// Steps until the mass is at rest or the duration ends; `watch` sees
+    /// every step and may stop the run.
+    pub fn run(
+        &mut self,
+        model: &Model,
+        st: &mut RunoutState,
+        watch: &mut dyn FnMut(&RunoutStep, &RunoutState) -> std::ops::ControlFlow<()>,
+    ) -> Result<RunoutEnd, SolveError> {
+        let t0 = st.time;
+        let mut peak: f64 = 0.0;
+        let mut quiet_since: Option<f64> = None;
+        let mut rest_at = None;
+        let (mut steps, mut time) = (0, 0.0);
+        while st.time - t0 < self.params.duration {
+            let r = self.step(model, st)?;
+            steps += 1;
+            time = st.time - t0;
+            peak = peak.max(r.max_speed);
+            if watch(&r, st).is_break() {
+                break;
+            }
+            if self.params.rest_time > 0.0 {
+                match r.max_speed < self.params.rest_velocity {
+                    true => {
+                        let since = *quiet_since.get_or_insert(time);
+                        if time - since >= self.params.rest_time && peak > self.params.rest_velocity {
+                            rest_at = Some(since);
+                            break;
+                        }
+                    }
+                    false => quiet_since = None,
+                }
+            }
+        }
+        Ok(RunoutEnd { steps, time, rest_at, peak_speed: peak, energy: self.energy })
+    }
+
+    /// Volume of the elements whose mean speed is above the rest velocity (m^3).
+    pub fn moving_volume(&self, model: &Model, st: &RunoutState) -> f64 {
+        let el = &model.elements;
+        (0..el.len())
+            .filter(|&e| {
+                let c = el.corners(e);
+                let mut v = [0.0; 3];
+                for &node in c {
+                    for d in 0..3 {
+                        v[d] += st.v[3 * node as usize + d] / c.len() as f64;
+                    }
+                }
+                (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt() > self.params.rest_velocity
+            })
+            .map(|e| self.volume[e])
+            .sum()
+    }
+
+    /// The largest rotation of any element (rad).
+    pub fn max_rotation(&self) -> f64 {
+        self.rotations.iter().map(rotation_angle).fold(0.0, f64::max)
+    }
+}
+
+/// The largest contact stiffness per unit area any pair can take (Pa/m).
+fn contact_kn_max(model: &Model, d: &ContactDefaults) -> f64 {
+    model
+        .interfaces
+        .iter()
+        .filter(|i| i.props.normal_modulus.is_finite())
+        .map(|i| i.props.normal_modulus / i.props.thickness)
+        .fold(d.normal_stiffness, f64::max)
+}
+
+impl RunoutState {
+    /// A runout from displacement `u` at rest (or with velocity `v`), the
+    /// springs' and joints' state as the failure phase left them.
+    pub fn new(u: Vec<f64>, v: Vec<f64>, springs: SpringState, joints: JointState) -> Self {
+        Self { u, v, springs, joints, step: 0, time: 0.0 }
+    }
+}
