@@ -126,6 +126,41 @@ pub struct Summary {
     /// The pore water that ran (scenes with `[water]`); absent: dry.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub water: Option<WaterSummary>,
+    /// The runout (`[runout]`), if the scene asks for one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub runout: Option<RunoutSummary>,
+}
+
+/// What a runout did (docs/method.md 2.9d; `runout.csv` has its course).
+#[derive(Debug, Clone, Default, Serialize, PartialEq)]
+pub struct RunoutSummary {
+    /// Whether it ran; if not, why (the scene did not slide).
+    pub ran: bool,
+    pub reason: Option<String>,
+    pub steps: usize,
+    /// Time run (s) and the time step (s).
+    pub time: f64,
+    pub dt: f64,
+    /// When the moving mass came to rest (s since the runout's start), if it did.
+    pub time_to_rest: Option<f64>,
+    /// Largest speed of any node (m/s).
+    pub peak_velocity: f64,
+    /// Largest displacement of any node during the runout (m): the runout distance.
+    pub runout_distance: f64,
+    /// The box of the blocks that moved more than 1 % of the runout distance, at the end (m).
+    pub deposit_min: [f64; 3],
+    pub deposit_max: [f64; 3],
+    /// Volume of those blocks (m^3).
+    pub moved_volume: f64,
+    /// The energy budget (J): gravity = kinetic + elastic + friction + joints + damping.
+    pub energy_gravity: f64,
+    pub energy_kinetic: f64,
+    pub energy_elastic: f64,
+    pub energy_friction: f64,
+    pub energy_joints: f64,
+    pub energy_damping: f64,
+    /// `|residual| / max(|gravity work|, kinetic energy at the start)`.
+    pub energy_closure: f64,
 }
 
 /// Which water model ran, and on what.

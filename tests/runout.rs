@@ -66,3 +66,73 @@ fn a_free_block_turned_90_degrees_keeps_no_stress() {
 fn runout_is_bit_for_bit_the_same_on_one_and_two_threads() {
     assert_rows("runout_determinism", &[runout::determinism_row().unwrap()]);
 }
+
+/// A scene of `verification/runout/` with extra TOML, written to a temporary
+/// directory (its mesh by absolute path).
+fn scene_with(name: &str, extra: &str) -> std::path::PathBuf {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("verification/runout");
+    let text = std::fs::read_to_string(root.join(format!("{name}.toml"))).unwrap();
+    let mesh = root.join(format!("{name}.msh"));
+    let text = text.replace(&format!("file = \"{name}.msh\""), &format!("file = {:?}", mesh.display().to_string()));
+    static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let k = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("cdem-runout-{name}-{}-{k}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("scene.toml");
+    std::fs::write(&path, format!("{text}\n{extra}")).unwrap();
+    path
+}
+
+#[test]
+fn cdem_run_with_runout_slides_the_block_and_writes_its_files() {
+    // 3DEC's block (a) on its 40 degree plane, from the bonded elastic state.
+    let g = reg::RUNOUT_GRAVITY;
+    let th = reg::RUNOUT_DIP_DEG.to_radians();
+    let extra = format!(
+        "[loads]\ngravity = [{}, 0.0, {}]\n\n[runout]\nduration = 1.0\nstart = \"rest\"\nrest_time = 0.0\n",
+        g * th.sin(),
+        -g * th.cos()
+    );
+    let scene = scene_with("sliding", &extra);
+    let out = scene.parent().unwrap().join("out");
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_cdem"))
+        .args(["run", scene.to_str().unwrap(), "--out", out.to_str().unwrap()])
+        .status()
+        .unwrap();
+    assert!(status.success(), "cdem run failed: {status}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let r = &summary["runout"];
+    assert_eq!(r["ran"], true);
+    // The front's travel in 1 s against a t^2 / 2 (1.820 m): the block's
+    // nodes move alike, the bonded start's upslope tension released at once.
+    let d = r["runout_distance"].as_f64().unwrap();
+    let a = reg::block_acceleration(reg::RUNOUT_DIP_DEG, reg::RUNOUT_SLIDING_PHI_DEG, g);
+    assert!((d - 0.5 * a).abs() < 0.03 * 0.5 * a, "runout distance {d} m, Coulomb {} m", 0.5 * a);
+    assert!(r["energy_closure"].as_f64().unwrap() < reg::TOL_RUNOUT_ENERGY);
+    let csv = std::fs::read_to_string(out.join("runout.csv")).unwrap();
+    assert!(csv.starts_with("step,time,kinetic_energy"), "{}", &csv[..80.min(csv.len())]);
+    assert!(csv.lines().count() > 10);
+}
+
+#[test]
+fn runout_on_a_scene_that_does_not_slide_says_so_and_exits_3() {
+    let scene = scene_with("at-rest", "[runout]\nduration = 1.0\n");
+    let out = scene.parent().unwrap().join("out");
+    let run = std::process::Command::new(env!("CARGO_BIN_EXE_cdem"))
+        .args(["run", scene.to_str().unwrap(), "--out", out.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert_eq!(run.status.code(), Some(3), "{stdout}");
+    assert!(stdout.contains("runout: not run: the slope did not slide"), "{stdout}");
+}
+
+#[test]
+fn a_bad_runout_key_is_refused_naming_it() {
+    let scene = scene_with("at-rest", "[runout]\nduration = -1.0\n");
+    let err = cdem::scene::Scene::load(&scene).unwrap_err().to_string();
+    assert!(err.contains("runout.duration"), "{err}");
+    let scene = scene_with("at-rest", "[runout]\nduration = 1.0\ndampign = \"local\"\n");
+    assert!(cdem::scene::Scene::load(&scene).is_err());
+}

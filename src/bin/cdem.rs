@@ -416,6 +416,25 @@ fn run(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
     if let Some(report) = &result.surface {
         print_surface(report);
     }
+    if let Some(r) = &s.runout {
+        match (&r.reason, r.time_to_rest) {
+            (Some(why), _) => println!("runout: not run: {why}"),
+            (None, rest) => println!(
+                "runout: {:.2} s in {} steps, {}; runout distance {:.3} m, peak velocity {:.2} m/s, moved volume {:.1} m^3, energy budget closes to {:.1e} -> {}",
+                r.time,
+                r.steps,
+                rest.map_or("still moving at the end".to_string(), |t| format!("at rest after {t:.2} s")),
+                r.runout_distance,
+                r.peak_velocity,
+                r.moved_volume,
+                r.energy_closure,
+                out.join("runout.csv").display()
+            ),
+        }
+        if !r.ran {
+            return Ok(Outcome::OutOfSteps);
+        }
+    }
     Ok(if s.end_state == cdem::EndState::Undecided { Outcome::OutOfSteps } else { Outcome::Reached })
 }
 

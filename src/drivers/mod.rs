@@ -20,6 +20,7 @@ pub mod input;
 pub mod lem;
 pub mod phase;
 pub mod run;
+pub mod runout;
 pub mod srm;
 
 pub use crate::summary::EndState;

@@ -32,6 +32,8 @@ pub struct RunResult {
     pub surface: Option<AnalysisReport>,
     /// Phase-1 frames (`output.frame_every`); the final state is not among them.
     pub frames: Vec<Frame>,
+    /// The runout, for a scene with `[runout]` (its displacement is not in `state`).
+    pub runout: Option<super::runout::RunoutResult>,
     pub summary: Summary,
 }
 
@@ -113,6 +115,12 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         max_displacement: max_displacement_since(&state.u, &f.u_elastic),
     });
 
+    let last_end = phase2.as_ref().map_or(phase1.end_state, |p| p.end_state);
+    let runout = match &scene.runout {
+        Some(section) => Some(super::runout::run(section, &model, &state, last_end)?),
+        None => None,
+    };
+
     let stress = scene.output.stress.then(|| match (&failure, elastic_stress) {
         (None, Some(elastic)) => elastic,
         _ => model.element_stresses_in(&state.rock, &state.u),
@@ -139,8 +147,9 @@ pub fn run_watched(scene: &Scene, watch: &mut dyn Watch) -> Result<RunResult, Er
         phase2,
         plastic,
         water: model.water.as_ref().map(|w| w.summary()),
+        runout: runout.as_ref().map(|r| r.summary.clone()),
     };
-    Ok(RunResult { model, state, elastic, failure, stress, surface, frames, summary })
+    Ok(RunResult { model, state, elastic, failure, stress, surface, frames, runout, summary })
 }
 
 /// Relaxes a model to equilibrium with the given settings and no watcher

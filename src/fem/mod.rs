@@ -106,6 +106,7 @@ pub fn solve(p: &FemProblem) -> crate::Result<FemSolution> {
         phase2: None,
         plastic: None,
         water: None,
+        runout: None,
     };
     Ok(FemSolution {
         coords: p.coords.clone(),

@@ -83,6 +83,34 @@ fn write_all(scene: &Scene, result: &RunResult, dir: &Path) -> Result<Vec<String
     if let Some(f) = &result.failure {
         files.extend(write_failure(result, f, dir, scene.output.vtk)?);
     }
+    if let Some(r) = result.runout.as_ref().filter(|r| r.summary.ran) {
+        files.extend(write_runout(result, r, dir, scene.output.vtk)?);
+    }
+    Ok(files)
+}
+
+/// `runout.csv` (one row every `[runout] row_every` steps) and, with VTK
+/// output, `runout.pvd`: a frame every `[runout] frame_every` seconds, the
+/// blocks where they are (displacement from the rest coordinates).
+fn write_runout(
+    result: &RunResult,
+    r: &crate::drivers::runout::RunoutResult,
+    dir: &Path,
+    vtk: bool,
+) -> Result<Vec<String>, Error> {
+    let mut files = vec!["runout.csv".to_string()];
+    write_csv(&dir.join("runout.csv"), &r.rows)?;
+    if vtk {
+        let mut pvd = Vec::new();
+        for (k, f) in r.frames.iter().enumerate() {
+            let name = format!("runout-{k:04}.vtu");
+            vtk::write_vtu(&dir.join(&name), &result.model, &vtk::Frame { u: &f.u, stress: None, cells: &[] })?;
+            pvd.push((f.time, name));
+        }
+        vtk::write_pvd(&dir.join("runout.pvd"), &pvd)?;
+        files.extend(pvd.into_iter().map(|(_, n)| n));
+        files.push("runout.pvd".into());
+    }
     Ok(files)
 }
 

@@ -75,6 +75,7 @@
 mod analysis;
 mod ensemble;
 pub mod joint_sets;
+mod runout;
 mod validate;
 
 use std::path::{Path, PathBuf};
@@ -89,6 +90,7 @@ pub use crate::model::spec::{
 use crate::solver::SolverParams;
 pub use analysis::{AnalysisSpec, SurfaceStrength};
 pub use ensemble::{Analysis, Distribution, EnsembleSpec, LemSurface, RandomVariable};
+pub use runout::{RunoutSection, RunoutStart};
 
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -119,6 +121,8 @@ pub struct Scene {
     pub analysis: Option<AnalysisSpec>,
     /// Pore water (a phreatic surface, water-filled cracks), if present.
     pub water: Option<WaterSection>,
+    /// The blocks in real time after the slope fails (`cdem run`), if present.
+    pub runout: Option<RunoutSection>,
     /// Directory of the scene file: relative paths are resolved against it.
     #[serde(skip)]
     pub base_dir: PathBuf,

@@ -141,6 +141,9 @@ pub(super) fn validate(s: &Scene) -> Result<(), SceneError> {
     if let Some(f) = &s.failure {
         f.validate()?;
     }
+    if let Some(r) = &s.runout {
+        r.validate()?;
+    }
     if let Some(a) = &s.analysis {
         let interfaces: Vec<&str> = s.interface.iter().map(|i| i.group.as_str()).collect();
         a.validate(&interfaces, s.lem.is_some())?;
