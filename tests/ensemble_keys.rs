@@ -14,8 +14,9 @@ use cdem::scene::Scene;
 use cdem::SceneError;
 
 /// Integer settings: numbers of a file that no draw may replace.
-const INTEGER_KEYS: [&str; 15] = [
+const INTEGER_KEYS: [&str; 16] = [
     "perturbation.seed",
+    "runout.row_every",
     "solver.max_steps",
     "failure.max_steps",
     "failure.stage_every",

@@ -35,6 +35,9 @@ pub fn run(scene_path: &Path, out: &Path, progress: &mut dyn FnMut(RunProgress))
     if result.surface.is_some() {
         figures::analysis::run_png(&result, &out.join("analysis.png"))?;
     }
+    if let Some(r) = result.runout.as_ref().filter(|r| r.summary.ran) {
+        figures::runout::runout_png(&result.model, r, &out.join("runout.png"))?;
+    }
     Ok(result)
 }
 

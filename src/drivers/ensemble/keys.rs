@@ -118,6 +118,25 @@ pub fn scene_number<'a>(s: &'a mut Scene, key: &str) -> Result<&'a mut f64, Unkn
             s.failure.as_mut().and_then(|f| f.sliding_displacement.as_mut())
         }
         [("failure", None), ("sliding_travel", None)] => s.failure.as_mut().and_then(|f| f.sliding_travel.as_mut()),
+        [("runout", None), (f, None)] => s.runout.as_mut().and_then(|r| match *f {
+            "duration" => Some(&mut r.duration),
+            "local_damping" => Some(&mut r.local_damping),
+            "rayleigh_ratio" => Some(&mut r.rayleigh_ratio),
+            "rayleigh_frequency" => Some(&mut r.rayleigh_frequency),
+            "safety" => Some(&mut r.safety),
+            "tolerance" => r.tolerance.as_mut(),
+            "max_penetration" => r.max_penetration.as_mut(),
+            "rest_velocity" => Some(&mut r.rest_velocity),
+            "rest_time" => Some(&mut r.rest_time),
+            "frame_every" => r.frame_every.as_mut(),
+            _ => None,
+        }),
+        [("runout", None), ("contact", None), (f, None)] => s.runout.as_mut().and_then(|r| match *f {
+            "normal_stiffness" => r.contact.normal_stiffness.as_mut(),
+            "shear_stiffness" => r.contact.shear_stiffness.as_mut(),
+            "friction_angle" => r.contact.friction_angle.as_mut(),
+            _ => None,
+        }),
         [("water", None), (f, None)] => s.water.as_mut().and_then(|w| match *f {
             "rise" => Some(&mut w.rise),
             "unit_weight" => Some(&mut w.unit_weight),

@@ -10,6 +10,7 @@ pub mod ensemble;
 pub mod joints;
 pub mod mechanism;
 pub mod plot;
+pub mod runout;
 pub mod section;
 pub mod stereonet;
 pub mod water;
