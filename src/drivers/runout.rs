@@ -12,7 +12,7 @@ use super::phase::Frame;
 use crate::error::Error;
 use crate::model::Model;
 use crate::scene::{RunoutSection, RunoutStart};
-use crate::solver::runout::{Runout, RunoutState, RunoutStep};
+use crate::solver::runout::{moving_volume, Runout, RunoutState, RunoutStep};
 use crate::solver::State;
 use crate::summary::{EndState, RunoutSummary};
 
@@ -46,6 +46,16 @@ pub struct RunoutResult {
     pub u_start: Vec<f64>,
 }
 
+/// Whether element `e` moved from `u0` to `u1` by more than 1 % of the
+/// runout distance `distance` at some corner: a block of the deposit.
+pub fn moved(model: &Model, u0: &[f64], u1: &[f64], distance: f64, e: usize) -> bool {
+    distance > 0.0
+        && model.elements.corners(e).iter().any(|&n| {
+            let n = 3 * n as usize;
+            (0..3).map(|d| (u1[n + d] - u0[n + d]).powi(2)).sum::<f64>().sqrt() > 0.01 * distance
+        })
+}
+
 /// The runout of `model` from `state` (the end of the last phase, which
 /// ended in `end`), or why it does not run.
 pub fn run(section: &RunoutSection, model: &Model, state: &State, end: EndState) -> Result<RunoutResult, Error> {
@@ -72,18 +82,6 @@ pub fn run(section: &RunoutSection, model: &Model, state: &State, end: EndState)
             .map(|i| (0..3).map(|d| (u[3 * i + d] - u_start[3 * i + d]).powi(2)).sum::<f64>().sqrt())
             .fold(0.0, f64::max)
     };
-    let moving_volume = |st: &RunoutState| {
-        let el = &model.elements;
-        (0..el.len())
-            .filter(|&e| {
-                let c = el.corners(e);
-                let v: [f64; 3] =
-                    [0, 1, 2].map(|d| c.iter().map(|&n| st.v[3 * n as usize + d]).sum::<f64>() / c.len() as f64);
-                (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt() > params.rest_velocity
-            })
-            .map(|e| el.volume[e])
-            .sum::<f64>()
-    };
     let mut next_frame = frame_every;
     let mut watch = |r: &RunoutStep, st: &RunoutState| {
         if r.step.is_multiple_of(section.row_every) || r.time >= next_frame {
@@ -96,7 +94,7 @@ pub fn run(section: &RunoutSection, model: &Model, state: &State, end: EndState)
                 kinetic_energy: r.kinetic,
                 max_speed: r.max_speed,
                 front_travel: travel_of(&st.u),
-                moving_volume: moving_volume(st),
+                moving_volume: moving_volume(model, &st.v, params.rest_velocity),
                 contacts: r.contacts,
                 sliding_contacts: r.sliding,
                 gravity_work: r.energy.gravity,
@@ -119,11 +117,7 @@ pub fn run(section: &RunoutSection, model: &Model, state: &State, end: EndState)
     let mut moved_volume = 0.0;
     for e in 0..el.len() {
         let c = el.corners(e);
-        let moved = c.iter().any(|&n| {
-            let n = n as usize;
-            (0..3).map(|d| (st.u[3 * n + d] - u_start[3 * n + d]).powi(2)).sum::<f64>().sqrt() > 0.01 * runout_distance
-        });
-        if moved && runout_distance > 0.0 {
+        if moved(model, &u_start, &st.u, runout_distance, e) {
             moved_volume += el.volume[e];
             for &n in c {
                 for d in 0..3 {

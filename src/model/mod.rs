@@ -7,7 +7,7 @@
 mod build;
 pub mod spec;
 pub mod supports;
-mod union_find;
+pub(crate) mod union_find;
 pub mod water;
 
 pub use build::build;

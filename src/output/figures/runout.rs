@@ -10,7 +10,7 @@ use plotters::prelude::*;
 
 use super::plot::{init_fonts, plot_err};
 use super::section::front_patches_deformed;
-use crate::drivers::runout::RunoutResult;
+use crate::drivers::runout::{moved, RunoutResult};
 use crate::error::Error;
 use crate::model::Model;
 
@@ -48,14 +48,7 @@ pub fn runout_png(model: &Model, r: &RunoutResult, path: &Path) -> Result<(), Er
         .label_style(("sans-serif", 15))
         .draw()
         .map_err(|e| plot_err(path, e))?;
-    let moved = |e: usize| {
-        let u0 = &r.frames[0].u;
-        let u1 = &r.frames[n - 1].u;
-        model.elements.corners(e).iter().any(|&c| {
-            let c = 3 * c as usize;
-            (0..3).map(|d| (u1[c + d] - u0[c + d]).powi(2)).sum::<f64>().sqrt() > 0.01 * r.summary.runout_distance
-        })
-    };
+    let moved = |e: usize| moved(model, &r.frames[0].u, &r.frames[n - 1].u, r.summary.runout_distance, e);
     for (k, (&pick, ps)) in picks.iter().zip(&patches).enumerate() {
         let c = colours[k.min(3)];
         let last = k + 1 == picks.len();

@@ -30,9 +30,10 @@ use std::collections::BTreeMap;
 use rayon::prelude::*;
 
 use crate::error::SolveError;
+use crate::model::union_find::UnionFind;
 use crate::model::Model;
 use crate::physics::contact::{contact_force, ContactHistory, ContactLaw};
-use crate::physics::corotation::{corotated_force, rotate, rotation_angle, Mat3, IDENTITY};
+use crate::physics::corotation::{corotated_force, rotate, Mat3, IDENTITY};
 use crate::physics::joint::{CoulombJoint, JointLaw, JointState};
 use crate::physics::spring::{spring_contact_force, Spring, SpringState, SpringStatus};
 use contact::{block_box, sweep, vertex_face, Faces};
@@ -157,7 +158,6 @@ struct Candidate {
 pub struct Runout {
     params: RunoutParams,
     dt: f64,
-    mass: Vec<f64>,
     faces: Faces,
     /// Per node: the elements holding it and its local corner there.
     node_elems: Vec<Vec<(u32, u8)>>,
@@ -193,8 +193,6 @@ pub struct Runout {
     elastic0: Option<f64>,
     u0: Vec<f64>,
     fixed_elem: Vec<bool>,
-    /// Volume of each element (m^3).
-    volume: Vec<f64>,
     pub remaps: usize,
 }
 
@@ -302,7 +300,6 @@ impl Runout {
         let mut me = Self {
             params,
             dt,
-            mass: model.mass.clone(),
             faces,
             node_elems,
             exterior,
@@ -327,7 +324,6 @@ impl Runout {
             elastic0: None,
             u0: Vec::new(),
             fixed_elem,
-            volume: el.volume.clone(),
             remaps: 0,
         };
         me.hand_over(model, springs, joints, u);
@@ -339,23 +335,9 @@ impl Runout {
         self.dt
     }
 
-    pub fn params(&self) -> &RunoutParams {
-        &self.params
-    }
-
-    /// The energy terms so far.
-    pub fn energy(&self) -> Energy {
-        self.energy
-    }
-
     /// The rotation of each element now (from the last step).
     pub fn rotations(&self) -> &[Mat3] {
         &self.rotations
-    }
-
-    /// The body of each element (elements of one body move as one continuum).
-    pub fn bodies(&self) -> &[u32] {
-        &self.body
     }
 
     /// Decides which springs still bond and regroups the bodies: a spring
@@ -376,32 +358,18 @@ impl Runout {
         if !changed {
             return false;
         }
-        let mut parent: Vec<u32> = (0..el.len() as u32).collect();
-        fn find(p: &mut [u32], mut i: u32) -> u32 {
-            while p[i as usize] != i {
-                p[i as usize] = p[p[i as usize] as usize];
-                i = p[i as usize];
-            }
-            i
-        }
-        let union = |p: &mut Vec<u32>, a: u32, b: u32| {
-            let (ra, rb) = (find(p, a), find(p, b));
-            if ra != rb {
-                let (lo, hi) = (ra.min(rb), ra.max(rb));
-                p[hi as usize] = lo;
-            }
-        };
+        let mut parts = UnionFind::new(el.len());
         for list in &self.node_elems {
             for w in list.windows(2) {
-                union(&mut parent, w[0].0, w[1].0);
+                parts.union(w[0].0 as usize, w[1].0 as usize);
             }
         }
         for s in (0..model.springs.len()).filter(|&s| self.bonded[s]) {
             let a = self.node_elems[model.springs.a[s] as usize][0].0;
             let b = self.node_elems[model.springs.b[s] as usize][0].0;
-            union(&mut parent, a, b);
+            parts.union(a as usize, b as usize);
         }
-        self.body = (0..el.len() as u32).map(|e| find(&mut parent, e)).collect();
+        self.body = (0..el.len()).map(|e| parts.find(e) as u32).collect();
         // A spring between two bodies hands over even if it is intact.
         for s in 0..model.springs.len() {
             let a = self.node_elems[model.springs.a[s] as usize][0].0;
@@ -512,7 +480,7 @@ impl Runout {
         let n = model.n_nodes();
         if self.u0.is_empty() {
             self.u0 = st.u.clone();
-            self.kinetic0 = (0..3 * n).map(|k| 0.5 * self.mass[k / 3] * st.v[k] * st.v[k]).sum();
+            self.kinetic0 = (0..3 * n).map(|k| 0.5 * model.mass[k / 3] * st.v[k] * st.v[k]).sum();
         }
         let x: Vec<[f64; 3]> = (0..n).map(|i| [0, 1, 2].map(|d| model.x0[i][d] + st.u[3 * i + d])).collect();
 
@@ -573,10 +541,9 @@ impl Runout {
             self.spring_input += input;
         }
         elastic += spring_energy;
-        // Springs that failed this step hand over from the next.
-        if self.hand_over(model, &st.springs, &st.joints, &st.u) {
-            self.mapped = false;
-        }
+        // Springs that failed this step hand over from the next (and the
+        // broad phase runs again: bodies may have split).
+        self.hand_over(model, &st.springs, &st.joints, &st.u);
 
         // 3. Contacts.
         let half = 0.5 * self.params.tolerance;
@@ -736,12 +703,12 @@ impl Runout {
                 let fd = match self.params.damping {
                     RunoutDamping::None => 0.0,
                     RunoutDamping::Local { alpha } => crate::physics::damping::local_damping(alpha, f, v_old),
-                    RunoutDamping::Rayleigh { ratio, omega } => 2.0 * ratio * omega * self.mass[i] * v_old,
+                    RunoutDamping::Rayleigh { ratio, omega } => 2.0 * ratio * omega * model.mass[i] * v_old,
                 };
-                let v_new = v_old + dt * (f - fd) / self.mass[i];
+                let v_new = v_old + dt * (f - fd) / model.mass[i];
                 let v_mid = 0.5 * (v_old + v_new);
                 damping_work += fd * v_mid * dt;
-                kinetic += 0.5 * self.mass[i] * v_mid * v_mid;
+                kinetic += 0.5 * model.mass[i] * v_mid * v_mid;
                 speed2 += v_mid * v_mid;
                 st.v[k] = v_new;
                 st.u[k] += dt * v_new;
@@ -822,29 +789,20 @@ impl Runout {
         }
         Ok(RunoutEnd { steps, time, rest_at, peak_speed: peak, energy: self.energy })
     }
+}
 
-    /// Volume of the elements whose mean speed is above the rest velocity (m^3).
-    pub fn moving_volume(&self, model: &Model, st: &RunoutState) -> f64 {
-        let el = &model.elements;
-        (0..el.len())
-            .filter(|&e| {
-                let c = el.corners(e);
-                let mut v = [0.0; 3];
-                for &node in c {
-                    for d in 0..3 {
-                        v[d] += st.v[3 * node as usize + d] / c.len() as f64;
-                    }
-                }
-                (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt() > self.params.rest_velocity
-            })
-            .map(|e| self.volume[e])
-            .sum()
-    }
-
-    /// The largest rotation of any element (rad).
-    pub fn max_rotation(&self) -> f64 {
-        self.rotations.iter().map(rotation_angle).fold(0.0, f64::max)
-    }
+/// Volume of the elements whose mean corner velocity `v` is above
+/// `rest_velocity` (m^3): the moving mass.
+pub fn moving_volume(model: &Model, v: &[f64], rest_velocity: f64) -> f64 {
+    let el = &model.elements;
+    (0..el.len())
+        .filter(|&e| {
+            let c = el.corners(e);
+            let m: [f64; 3] = [0, 1, 2].map(|d| c.iter().map(|&n| v[3 * n as usize + d]).sum::<f64>() / c.len() as f64);
+            (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]).sqrt() > rest_velocity
+        })
+        .map(|e| el.volume[e])
+        .sum()
 }
 
 /// The largest contact stiffness per unit area any pair can take (Pa/m).
