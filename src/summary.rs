@@ -141,6 +141,8 @@ pub struct RunoutSummary {
     /// Time run (s) and the time step (s).
     pub time: f64,
     pub dt: f64,
+    /// Springs whose stiffness `[runout] stiffness_limit` lowered.
+    pub springs_limited: usize,
     /// When the moving mass came to rest (s since the runout's start), if it did.
     pub time_to_rest: Option<f64>,
     /// Largest speed of any node (m/s).

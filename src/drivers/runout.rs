@@ -67,6 +67,17 @@ pub fn run(section: &RunoutSection, model: &Model, state: &State, end: EndState)
         return Ok(RunoutResult { summary, rows: Vec::new(), frames: Vec::new(), u_start: state.u.clone() });
     }
     let params = section.params(model)?;
+    // The Itasca codes' stiffness rule, when the scene asks for it: the
+    // springs of a model built for the static phases may be far stiffer
+    // than their blocks, and in real time they set the step.
+    let (limited, springs_limited) = match params.stiffness_limit {
+        Some(f) => {
+            let (m, k) = model.with_spring_limit(f);
+            (Some(m), k)
+        }
+        None => (None, 0),
+    };
+    let model = limited.as_ref().unwrap_or(model);
     let mut engine = Runout::new(model, params.clone(), &state.springs, &state.joints, &state.u)?;
     // The failure phase's velocities are fictitious (mass scaling): the
     // runout starts from rest.
@@ -137,6 +148,7 @@ pub fn run(section: &RunoutSection, model: &Model, state: &State, end: EndState)
         steps: end.steps,
         time: end.time,
         dt: engine.dt(),
+        springs_limited,
         time_to_rest: end.rest_at,
         peak_velocity: end.peak_speed,
         runout_distance,

@@ -188,6 +188,63 @@ impl Model {
         self.x0.len()
     }
 
+    /// Each element's equivalent normal stiffness per unit area,
+    /// `(K + 4G/3) / dz_min` (Pa/m): the P-wave modulus `lambda + 2 mu` over
+    /// the element's smallest width normal to one of its faces (the distance
+    /// from the face's plane to the farthest corner), as the Itasca codes
+    /// measure "the stiffest neighbouring zone".
+    pub fn zone_stiffness(&self) -> Vec<f64> {
+        let el = &self.elements;
+        (0..el.len())
+            .map(|e| {
+                let corners: Vec<[f64; 3]> = el.corners(e).iter().map(|&c| self.x0[c as usize]).collect();
+                let width = el.kind[e]
+                    .faces()
+                    .iter()
+                    .map(|fc| {
+                        let p: Vec<[f64; 3]> = fc.iter().map(|&c| corners[c]).collect();
+                        let (n, _) = crate::mesh::adjacency::polygon_normal_area(&p);
+                        corners
+                            .iter()
+                            .map(|q| ((0..3).map(|d| (q[d] - p[0][d]) * n[d]).sum::<f64>()).abs())
+                            .fold(0.0, f64::max)
+                    })
+                    .fold(f64::INFINITY, f64::min);
+                let lame = self.materials[el.material[e] as usize].lame;
+                (lame.lambda + 2.0 * lame.mu) / width
+            })
+            .collect()
+    }
+
+    /// This model with every spring's normal and shear stiffness limited to
+    /// `factor` times the [`Self::zone_stiffness`] of the softer of its two
+    /// elements, times its area: the Itasca codes' rule for joint stiffness
+    /// (at most ten times the stiffest neighbouring zone's), taken on the
+    /// softer side so that each node's own element bounds its time step
+    /// (references/runout.md). Returns the model and how many springs were
+    /// limited.
+    pub fn with_spring_limit(&self, factor: f64) -> (Model, usize) {
+        let zone = self.zone_stiffness();
+        let mut elem_of = vec![0u32; self.n_nodes()];
+        let el = &self.elements;
+        for e in (0..el.len()).rev() {
+            for &c in el.corners(e) {
+                elem_of[c as usize] = e as u32;
+            }
+        }
+        let mut out = self.clone();
+        let sp = &mut out.springs;
+        let mut limited = 0;
+        for s in 0..sp.len() {
+            let k = zone[elem_of[sp.a[s] as usize] as usize].min(zone[elem_of[sp.b[s] as usize] as usize]);
+            let cap = factor * k * sp.area[s];
+            limited += usize::from(sp.kn[s] > cap || sp.ks[s] > cap);
+            sp.kn[s] = sp.kn[s].min(cap);
+            sp.ks[s] = sp.ks[s].min(cap);
+        }
+        (out, limited)
+    }
+
     /// The box of the node copies `nodes` at rest: `(lo, hi)` per axis (m);
     /// infinite bounds (`lo > hi`) for no node.
     pub fn bounds_of(&self, nodes: impl IntoIterator<Item = usize>) -> ([f64; 3], [f64; 3]) {

@@ -73,8 +73,9 @@ pub struct RunoutSection {
     /// Deeper than this inside another block is a missed contact (m).
     /// Default 20 % of the smallest element's size.
     pub max_penetration: Option<f64>,
-    /// At rest when no node moves faster (m/s, default 0.01) for `rest_time`
-    /// (s, default 0.5; 0: run the whole duration).
+    /// At rest when, over a window of `rest_time` (s, default 0.5; 0: run
+    /// the whole duration), no node has moved more than `rest_velocity *
+    /// rest_time` (m/s, default 0.01).
     #[serde(default = "default_rest_velocity")]
     pub rest_velocity: f64,
     #[serde(default = "default_rest_time")]
@@ -84,6 +85,11 @@ pub struct RunoutSection {
     pub row_every: usize,
     /// A `runout.pvd` frame every this many seconds (default: 20 frames over the duration).
     pub frame_every: Option<f64>,
+    /// Limit every spring's and contact's stiffness to this many times the
+    /// stiffer neighbouring element's `(K + 4G/3) / dz_min` (the Itasca
+    /// codes' rule for joints in dynamic runs: 10). Default: none, the
+    /// stiffnesses as given.
+    pub stiffness_limit: Option<f64>,
     #[serde(default)]
     pub contact: RunoutContactSection,
 }
@@ -145,6 +151,9 @@ impl RunoutSection {
         }
         if let Some(f) = self.frame_every {
             positive("runout.frame_every", f)?;
+        }
+        if let Some(f) = self.stiffness_limit {
+            positive("runout.stiffness_limit", f)?;
         }
         let c = &self.contact;
         for (key, v) in [
@@ -211,6 +220,7 @@ impl RunoutSection {
             rest_velocity: self.rest_velocity,
             rest_time: self.rest_time,
             contact: ContactDefaults { normal_stiffness: normal, shear_stiffness: shear, friction_deg: friction },
+            stiffness_limit: self.stiffness_limit,
         })
     }
 }

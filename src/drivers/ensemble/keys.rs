@@ -129,6 +129,7 @@ pub fn scene_number<'a>(s: &'a mut Scene, key: &str) -> Result<&'a mut f64, Unkn
             "rest_velocity" => Some(&mut r.rest_velocity),
             "rest_time" => Some(&mut r.rest_time),
             "frame_every" => r.frame_every.as_mut(),
+            "stiffness_limit" => r.stiffness_limit.as_mut(),
             _ => None,
         }),
         [("runout", None), ("contact", None), (f, None)] => s.runout.as_mut().and_then(|r| match *f {

@@ -133,6 +133,7 @@ pub fn params(setup: &Setup, friction_deg: f64) -> RunoutParams {
             shear_stiffness: setup.contact_stiffness,
             friction_deg,
         },
+        stiffness_limit: None,
     }
 }
 

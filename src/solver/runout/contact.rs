@@ -365,7 +365,7 @@ pub fn sweep(boxes: &[([f64; 3], [f64; 3])], keep: impl Fn(usize, usize) -> bool
 /// Broad phase by a uniform grid of cells of side `cell` (Munjiza's NBS and
 /// 3DEC's cell mapping in their simplest form): each box is entered in the
 /// cells it covers and pairs are read cell by cell, each once. The same
-/// pairs as [`sweep`], sorted; kept to measure against it (benches/runout.rs).
+/// pairs as [`sweep`], sorted; kept to measure against it (benches/broad_phase.rs).
 pub fn grid(boxes: &[([f64; 3], [f64; 3])], cell: f64, keep: impl Fn(usize, usize) -> bool) -> Vec<(u32, u32)> {
     use std::collections::HashMap;
     let key = |p: [f64; 3]| p.map(|v| (v / cell).floor() as i64);

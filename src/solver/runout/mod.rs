@@ -72,11 +72,16 @@ pub struct RunoutParams {
     pub tolerance: f64,
     /// A vertex deeper than this inside another block is a missed contact (m).
     pub max_penetration: f64,
-    /// The mass is at rest when no free node moves faster (m/s) ...
+    /// The mass is at rest when no node's mean speed (m/s) over a window ...
     pub rest_velocity: f64,
-    /// ... for this long (s). Zero: run the whole duration.
+    /// ... of this length (s) is above `rest_velocity`. Zero: run the whole duration.
     pub rest_time: f64,
     pub contact: ContactDefaults,
+    /// Limit of every contact's stiffness: this many times the softer
+    /// block's [`Model::zone_stiffness`] (within the Itasca codes' rule, at
+    /// most 10 times the stiffer's); the
+    /// driver limits the springs the same way ([`Model::with_spring_limit`]).
+    pub stiffness_limit: Option<f64>,
 }
 
 /// The energy terms of a runout since its start (J). The budget:
@@ -193,6 +198,8 @@ pub struct Runout {
     elastic0: Option<f64>,
     u0: Vec<f64>,
     fixed_elem: Vec<bool>,
+    /// Per element: the contact stiffness limit (Pa/m), empty for none.
+    contact_limit: Vec<f64>,
     pub remaps: usize,
 }
 
@@ -272,6 +279,10 @@ impl Runout {
         // Time step: the elements' and springs' row sums, and the contacts'
         // penalty at every exterior node.
         let mut rows = crate::solver::timestep::stiffness_row_sums(model);
+        let contact_limit: Vec<f64> = match params.stiffness_limit {
+            Some(f) => model.zone_stiffness().iter().map(|k| f * k).collect(),
+            None => Vec::new(),
+        };
         let kn_max = contact_kn_max(model, &params.contact);
         let mut area = vec![0.0; n];
         for e in 0..el.len() {
@@ -282,8 +293,12 @@ impl Runout {
                 }
             }
         }
+        let node_limit = |i: usize| match contact_limit.is_empty() {
+            true => f64::INFINITY,
+            false => node_elems[i].iter().map(|&(e, _)| contact_limit[e as usize]).fold(f64::INFINITY, f64::min),
+        };
         for i in 0..n {
-            rows[i] += 4.0 * kn_max * area[i];
+            rows[i] += 4.0 * kn_max.min(node_limit(i)) * area[i];
         }
         let lambda = rows.iter().zip(&model.mass).map(|(r, m)| r / m).fold(0.0, f64::max);
         let amplification = match params.damping {
@@ -324,6 +339,7 @@ impl Runout {
             elastic0: None,
             u0: Vec::new(),
             fixed_elem,
+            contact_limit,
             remaps: 0,
         };
         me.hand_over(model, springs, joints, u);
@@ -418,6 +434,11 @@ impl Runout {
             }
             None => (d.normal_stiffness, d.shear_stiffness, d.friction_deg.to_radians().tan()),
         };
+        let limit = match self.contact_limit.is_empty() {
+            true => f64::INFINITY,
+            false => self.contact_limit[a as usize].min(self.contact_limit[b as usize]),
+        };
+        let (kn, ks) = (kn.min(limit), ks.min(limit));
         ContactLaw { kn: kn * area, ks: ks * area, tan_phi, cohesion: 0.0 }
     }
 
@@ -491,9 +512,12 @@ impl Runout {
         fe.par_chunks_mut(24).zip(rot.par_iter_mut()).zip(en.par_iter_mut()).enumerate().for_each(
             |(e, ((f, r), w))| {
                 let corners = el.corners(e);
-                let x0: Vec<[f64; 3]> = corners.iter().map(|&c| model.x0[c as usize]).collect();
-                let xe: Vec<[f64; 3]> = corners.iter().map(|&c| x[c as usize]).collect();
-                let c = corotated_force(el.stiffness(e), &x0, &xe, &mut f[..3 * corners.len()]);
+                let m = corners.len();
+                let (mut x0, mut xe) = ([[0.0; 3]; 8], [[0.0; 3]; 8]);
+                for (k, &c) in corners.iter().enumerate() {
+                    (x0[k], xe[k]) = (model.x0[c as usize], x[c as usize]);
+                }
+                let c = corotated_force(el.stiffness(e), &x0[..m], &xe[..m], &mut f[..3 * m]);
                 (*r, *w) = (c.rotation, c.energy);
             },
         );
@@ -554,7 +578,15 @@ impl Runout {
         }
         let dt = self.dt;
         // 3a. Narrow phase: where each candidate vertex touches its block.
-        let corners_of = |e: usize| -> Vec<[f64; 3]> { el.corners(e).iter().map(|&c| x[c as usize]).collect() };
+        // An element's corners now, on the stack (at most 8).
+        let corners_of = |e: usize| -> Corners {
+            let mut out = Corners { p: [[0.0; 3]; 8], len: 0 };
+            for &c in el.corners(e) {
+                out.p[out.len] = x[c as usize];
+                out.len += 1;
+            }
+            out
+        };
         let found: Vec<Option<contact::FacePoint>> = self
             .candidates
             .par_iter()
@@ -763,7 +795,10 @@ impl Runout {
     ) -> Result<RunoutEnd, SolveError> {
         let t0 = st.time;
         let mut peak: f64 = 0.0;
-        let mut quiet_since: Option<f64> = None;
+        // Rest: over a window of rest_time no node has moved more than
+        // rest_velocity * rest_time (its mean speed below rest_velocity):
+        // elastic vibration about a deposit is not motion of the mass.
+        let mut window = (t0, st.u.clone());
         let mut rest_at = None;
         let (mut steps, mut time) = (0, 0.0);
         while st.time - t0 < self.params.duration {
@@ -774,17 +809,19 @@ impl Runout {
             if watch(&r, st).is_break() {
                 break;
             }
-            if self.params.rest_time > 0.0 {
-                match r.max_speed < self.params.rest_velocity {
-                    true => {
-                        let since = *quiet_since.get_or_insert(time);
-                        if time - since >= self.params.rest_time && peak > self.params.rest_velocity {
-                            rest_at = Some(since);
-                            break;
-                        }
-                    }
-                    false => quiet_since = None,
+            if self.params.rest_time > 0.0 && st.time - window.0 >= self.params.rest_time {
+                let reach = self.params.rest_velocity * (st.time - window.0);
+                let moved =
+                    st.u.chunks(3)
+                        .zip(window.1.chunks(3))
+                        .map(|(a, b)| (0..3).map(|d| (a[d] - b[d]).powi(2)).sum::<f64>())
+                        .fold(0.0, f64::max)
+                        .sqrt();
+                if moved < reach && peak > self.params.rest_velocity {
+                    rest_at = Some(window.0 - t0);
+                    break;
                 }
+                window = (st.time, st.u.clone());
             }
         }
         Ok(RunoutEnd { steps, time, rest_at, peak_speed: peak, energy: self.energy })
@@ -803,6 +840,19 @@ pub fn moving_volume(model: &Model, v: &[f64], rest_velocity: f64) -> f64 {
         })
         .map(|e| el.volume[e])
         .sum()
+}
+
+/// An element's corner positions, without a heap allocation.
+struct Corners {
+    p: [[f64; 3]; 8],
+    len: usize,
+}
+
+impl std::ops::Deref for Corners {
+    type Target = [[f64; 3]];
+    fn deref(&self) -> &[[f64; 3]] {
+        &self.p[..self.len]
+    }
 }
 
 /// The largest contact stiffness per unit area any pair can take (Pa/m).
