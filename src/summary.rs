@@ -154,6 +154,12 @@ pub struct RunoutSummary {
     pub deposit_max: [f64; 3],
     /// Volume of those blocks (m^3).
     pub moved_volume: f64,
+    /// Their centre of mass: its drop along gravity and its travel across it
+    /// (m), and the angle of that path, `atan(drop / travel)` (degrees): the
+    /// energy line's, which the sled model puts at the friction angle.
+    pub mass_drop: f64,
+    pub mass_travel: f64,
+    pub travel_angle: f64,
     /// The energy budget (J): gravity = kinetic + elastic + friction + joints + damping.
     pub energy_gravity: f64,
     pub energy_kinetic: f64,

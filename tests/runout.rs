@@ -63,6 +63,21 @@ fn a_free_block_turned_90_degrees_keeps_no_stress() {
 }
 
 #[test]
+fn the_paper_slope_runs_out_onto_the_toe_bench_and_stops_beyond_its_energy_line() {
+    // Phases 1 and 2, then the runout to rest: about 2 minutes on 2 cores.
+    let (r, rows) = runout::slope_rows().unwrap();
+    let s = &r.summary;
+    // The mass left the slope: its front beyond the toe (x = 20 m), the sliding
+    // mass's volume moved (the circle's segment, 2 m wide).
+    assert!(s.deposit_min[0] < 20.0 && s.moved_volume > 400.0, "{s:?}");
+    // Gravity's work is M |g| times the centre of mass's drop (no other
+    // external force works): the drop is the budget's, not a second estimate.
+    let m = s.moved_volume * 2100.0;
+    assert!((m * 9.81 * s.mass_drop / s.energy_gravity - 1.0).abs() < 0.01, "{s:?}");
+    assert_rows("runout_slope", &rows);
+}
+
+#[test]
 fn runout_is_bit_for_bit_the_same_on_one_and_two_threads() {
     assert_rows("runout_determinism", &[runout::determinism_row().unwrap()]);
 }

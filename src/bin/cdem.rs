@@ -420,13 +420,16 @@ fn run(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
         match (&r.reason, r.time_to_rest) {
             (Some(why), _) => println!("runout: not run: {why}"),
             (None, rest) => println!(
-                "runout: {:.2} s in {} steps, {}; runout distance {:.3} m, peak velocity {:.2} m/s, moved volume {:.1} m^3, energy budget closes to {:.1e} -> {}",
+                "runout: {:.2} s in {} steps, {}; runout distance {:.3} m, peak velocity {:.2} m/s, moved volume {:.1} m^3, its centre of mass {:.2} m down and {:.2} m across (travel angle {:.1} deg), energy budget closes to {:.1e} -> {}",
                 r.time,
                 r.steps,
                 rest.map_or("still moving at the end".to_string(), |t| format!("at rest after {t:.2} s")),
                 r.runout_distance,
                 r.peak_velocity,
                 r.moved_volume,
+                r.mass_drop,
+                r.mass_travel,
+                r.travel_angle,
                 r.energy_closure,
                 out.join("runout.csv").display()
             ),

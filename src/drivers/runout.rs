@@ -56,6 +56,37 @@ pub fn moved(model: &Model, u0: &[f64], u1: &[f64], distance: f64, e: usize) -> 
         })
 }
 
+/// The path of the moved mass's centre of mass (the lumped masses of the
+/// blocks that [`moved`]) from `u0` to `u1`: its drop along gravity and its
+/// travel across it (m). The work of gravity on the moved mass is
+/// `M |g| drop`; `drop / travel` is the slope of its energy line (the sled
+/// model's `tan(phi)`, references/runout.md).
+pub fn centre_of_mass_path(model: &Model, u0: &[f64], u1: &[f64], distance: f64) -> (f64, f64) {
+    let el = &model.elements;
+    let mut counted = vec![false; model.n_nodes()];
+    let (mut m, mut shift) = (0.0, [0.0; 3]);
+    for e in (0..el.len()).filter(|&e| moved(model, u0, u1, distance, e)) {
+        for &n in el.corners(e) {
+            let n = n as usize;
+            if !std::mem::replace(&mut counted[n], true) {
+                m += model.mass[n];
+                for d in 0..3 {
+                    shift[d] += model.mass[n] * (u1[3 * n + d] - u0[3 * n + d]);
+                }
+            }
+        }
+    }
+    let g = model.gravity;
+    let g_len = (g[0] * g[0] + g[1] * g[1] + g[2] * g[2]).sqrt();
+    if m == 0.0 || g_len == 0.0 {
+        return (0.0, 0.0);
+    }
+    let shift = shift.map(|v| v / m);
+    let drop = (0..3).map(|d| shift[d] * g[d] / g_len).sum::<f64>();
+    let across = (0..3).map(|d| (shift[d] - drop * g[d] / g_len).powi(2)).sum::<f64>().sqrt();
+    (drop, across)
+}
+
 /// The runout of `model` from `state` (the end of the last phase, which
 /// ended in `end`), or why it does not run.
 pub fn run(section: &RunoutSection, model: &Model, state: &State, end: EndState) -> Result<RunoutResult, Error> {
@@ -139,6 +170,7 @@ pub fn run(section: &RunoutSection, model: &Model, state: &State, end: EndState)
             }
         }
     }
+    let (mass_drop, mass_travel) = centre_of_mass_path(model, &u_start, &st.u, runout_distance);
     let e = end.energy;
     // The runout starts from rest: the budget is measured against gravity's work.
     let scale = e.gravity.abs();
@@ -155,6 +187,9 @@ pub fn run(section: &RunoutSection, model: &Model, state: &State, end: EndState)
         deposit_min: if moved_volume > 0.0 { lo } else { [0.0; 3] },
         deposit_max: if moved_volume > 0.0 { hi } else { [0.0; 3] },
         moved_volume,
+        mass_drop,
+        mass_travel,
+        travel_angle: if mass_travel > 0.0 { mass_drop.atan2(mass_travel).to_degrees() } else { 0.0 },
         energy_gravity: e.gravity,
         energy_kinetic: e.kinetic,
         energy_elastic: e.elastic,

@@ -138,6 +138,7 @@ pub fn build(mesh: &Mesh, spec: &ModelSpec) -> Result<Model, Error> {
         mass,
         fixed,
         f_ext,
+        gravity: spec.gravity,
         elements: el,
         plastic,
         springs,

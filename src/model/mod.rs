@@ -154,6 +154,8 @@ pub struct Model {
     pub fixed: Vec<bool>,
     /// External force (gravity and water), `3 i + d` (N).
     pub f_ext: Vec<f64>,
+    /// The scene's gravity (m/s^2): its direction is "down" for a runout's drop.
+    pub gravity: [f64; 3],
     pub elements: Elements,
     /// Per-tetrahedron operators of the elements whose material yields.
     pub plastic: PlasticCells,

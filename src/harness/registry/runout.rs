@@ -96,7 +96,31 @@ pub const TOL_RUNOUT_OBJECTIVITY: f64 = 1e-6;
 /// Every runout's energy budget: closes within 1 % of the work of gravity.
 pub const TOL_RUNOUT_ENERGY: f64 = 0.01;
 
+/// The paper's slip-surface slope run out (verification/runout/slope-slip-runout.toml).
+pub const RUNOUT_SLOPE: Case = Case {
+    name: "paper slope run out",
+    input: "verification/runout/slope-slip-runout.toml",
+    checks: "after global sliding on the slip circle, the mass comes to rest on the toe bench; its centre of mass's energy line against the sled model; the energy budget (tests/runout.rs)",
+    source: RUNOUT_MD,
+};
+/// The toe bench's level (m): z = 20 in verification/cases/slope-slip/slope-slip.geo
+/// (the slip circle dips 0.19 m below it just behind the toe).
+pub const RUNOUT_TOE_BENCH_Z: f64 = 20.0;
+/// The sliding mass's friction angle (deg): the slip interface's and the new
+/// contacts' in slope-slip-runout.toml (the paper's phi = 18 deg).
+pub const RUNOUT_SLOPE_PHI_DEG: f64 = 18.0;
+/// The sled model's travel angle (Heim 1932; Hsu 1975; Hungr 2005): a mass
+/// sliding from rest to rest with friction `tan(phi)` stops on its energy
+/// line, centre-of-mass drop / travel = `tan(phi)`, exactly for a sled on a
+/// path of small curvature. Curvature, rotation and internal deformation add
+/// friction work, so a deformable mass on a concave path stops short of it:
+/// its travel angle is at least phi (references/runout.md).
+pub fn sled_travel_angle(phi_deg: f64) -> f64 {
+    phi_deg
+}
+
 const SLIDING_CASE: &str = "3DEC sliding block, 10 x 5 m, dip 40, phi 20";
+const SLOPE_CASE: &str = "the paper's slip-surface slope run out, phi 18 (stiffness_limit 10)";
 
 /// The runout rows (appended to the registry's).
 #[rustfmt::skip]
@@ -115,5 +139,8 @@ pub const RUNOUT_ROWS: &[RowSpec] = &[
     spec("runout/energy-3dec-toppling", "3DEC toppling block, 10 x 25 m, dip 40, phi 40", "energy budget: |residual| / gravity work", Asserted(TOL_RUNOUT_ENERGY), RUNOUT_MD, "tests/runout.rs").with_reference(0.0),
     spec("runout/energy-launched", "block launched at 7 m/s on a level plane, phi 30", "energy budget: |residual| / kinetic energy at launch", Asserted(TOL_RUNOUT_ENERGY), RUNOUT_MD, "tests/runout.rs").with_reference(0.0),
     spec("runout/energy-dropped", "block dropped 1 m, local damping 0.8", "energy budget: |residual| / gravity work", Asserted(TOL_RUNOUT_ENERGY), RUNOUT_MD, "tests/runout.rs").with_reference(0.0),
+    spec("runout/slope-slip-rest", SLOPE_CASE, "comes to rest on the toe bench (deposit above z = 20 - 0.5 m, at rest within 20 s)", Compared(true), RUNOUT_MD, "tests/runout.rs"),
+    spec("runout/slope-slip-travel-angle", SLOPE_CASE, "travel angle of the moved mass's centre of mass (deg): at least the sled model's phi", Compared(true), RUNOUT_MD, "tests/runout.rs"),
+    spec("runout/energy-slope-slip", SLOPE_CASE, "energy budget: |residual| / gravity work", Asserted(TOL_RUNOUT_ENERGY), RUNOUT_MD, "tests/runout.rs").with_reference(0.0),
     spec("runout/determinism", SLIDING_CASE, "1 and 2 threads: identical displacement, bit for bit", Compared(true), RUNOUT_MD, "tests/runout.rs"),
 ];

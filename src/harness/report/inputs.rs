@@ -65,6 +65,8 @@ pub const DECLARED: &[(&str, &[&str])] = &[
     ("runout/dropped", &["verification/runout/dropped.toml", "verification/runout/dropped.msh"]),
     ("runout/energy-dropped", &["verification/runout/dropped.toml", "verification/runout/dropped.msh"]),
     ("runout/objectivity", &["verification/runout/dropped.toml", "verification/runout/dropped.msh"]),
+    ("runout/slope-slip", &["verification/runout/slope-slip-runout.toml", "verification/cases/slope-slip/slope-slip.msh"]),
+    ("runout/energy-slope-slip", &["verification/runout/slope-slip-runout.toml", "verification/cases/slope-slip/slope-slip.msh"]),
     ("srm/block-friction", &["verification/cases/block-srm/block-srm-friction.toml"]),
     ("srm/block-cohesion", &["verification/cases/block-srm/block-srm-cohesion.toml"]),
     ("water/column-", &["verification/water/column-submerged.toml", "verification/cases/column/column.geo"]),

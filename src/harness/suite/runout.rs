@@ -372,6 +372,65 @@ pub fn objectivity_row() -> Result<(BlockRun, Check), Error> {
     Ok((r.clone(), reg::row("runout/objectivity").value(r.stress_over_e, 0.0, r.seconds).with_note(note)))
 }
 
+/// What the paper slope's runout gave: the summary of `cdem run` of
+/// slope-slip-runout.toml.
+#[derive(Debug, Clone)]
+pub struct SlopeRun {
+    pub summary: crate::summary::RunoutSummary,
+    pub seconds: f64,
+}
+
+/// Rows `runout/slope-slip-*` and its energy: the paper's slip-surface slope
+/// run through `cdem run`'s own path (phases 1 and 2, then the runout).
+pub fn slope_rows() -> Result<(SlopeRun, Vec<Check>), Error> {
+    let t0 = std::time::Instant::now();
+    let scene = reg::RUNOUT_SLOPE.scene()?;
+    let result = crate::drivers::run::run_scene(&scene, &mut |_, _| {})?;
+    let summary = result.runout.map(|r| r.summary).ok_or_else(|| {
+        Error::io("slope-slip-runout.toml", std::io::Error::other("the scene has no [runout]".to_string()))
+    })?;
+    let seconds = t0.elapsed().as_secs_f64();
+    let s = &summary;
+    let on_bench = s.ran && s.moved_volume > 0.0 && s.deposit_min[2] >= reg::RUNOUT_TOE_BENCH_Z - 0.5;
+    let rest = s.time_to_rest.filter(|_| on_bench);
+    let ours = match s.time_to_rest {
+        Some(t) => format!(
+            "at rest after {t:.1} s; deposit x {:.1} to {:.1} m, z {:.1} to {:.1} m; {:.0} m^3 moved, largest travel {:.2} m",
+            s.deposit_min[0], s.deposit_max[0], s.deposit_min[2], s.deposit_max[2], s.moved_volume, s.runout_distance
+        ),
+        None => format!("still moving after {:.1} s (largest travel {:.2} m)", s.time, s.runout_distance),
+    };
+    let sled = reg::sled_travel_angle(reg::RUNOUT_SLOPE_PHI_DEG);
+    let angle_text = format!(
+        "{:.2} deg: the centre of mass {:.2} m down over {:.2} m (drop / travel {:.4} against tan(phi) {:.4}, {:+.1} %)",
+        s.travel_angle,
+        s.mass_drop,
+        s.mass_travel,
+        s.mass_drop / s.mass_travel,
+        sled.to_radians().tan(),
+        100.0 * (s.mass_drop / s.mass_travel / sled.to_radians().tan() - 1.0)
+    );
+    let note = format!("{} steps of {:.2e} s, {} springs limited", s.steps, s.dt, s.springs_limited);
+    let rows = vec![
+        reg::row("runout/slope-slip-rest")
+            .compared(&ours, "at rest on the toe bench (z = 20 m)", rest.is_some(), seconds)
+            .with_note(note.clone()),
+        reg::row("runout/slope-slip-travel-angle")
+            .compared(
+                &angle_text,
+                &format!("at least {sled:.0} deg (the sled model's energy line, tan(phi))"),
+                s.ran && s.travel_angle >= sled,
+                seconds,
+            )
+            .with_note("curvature, rotation and deformation only add friction work: the sled is the far bound"),
+        reg::row("runout/energy-slope-slip").value(s.energy_closure, 0.0, seconds).with_note(format!(
+            "gravity {:.4e} J = kinetic {:.4e} + elastic {:.4e} + friction {:.4e} + joints {:.4e} + damping {:.4e}",
+            s.energy_gravity, s.energy_kinetic, s.energy_elastic, s.energy_friction, s.energy_joints, s.energy_damping
+        )),
+    ];
+    Ok((SlopeRun { summary, seconds }, rows))
+}
+
 /// Row `runout/determinism`: the sliding block on 1 and on 2 threads.
 pub fn determinism_row() -> Result<Check, Error> {
     let t0 = std::time::Instant::now();
@@ -410,6 +469,7 @@ pub fn rows() -> Result<Vec<Check>, Error> {
     out.extend(launched_rows()?.1);
     out.extend(dropped_rows()?.2);
     out.push(objectivity_row()?.1);
+    out.extend(slope_rows()?.1);
     out.push(determinism_row()?);
     Ok(out)
 }

@@ -89,6 +89,21 @@ impl Faces {
         &self.tri[self.tri_ptr[e]..self.tri_ptr[e + 1]]
     }
 
+    /// Element `e`'s triangles where its corners are now (`corners`), into
+    /// `out` (one per triangle): placed once a step for every block that a
+    /// candidate vertex may touch, then read by [`vertex_face`] and [`covers`].
+    pub fn place(&self, e: usize, corners: &[[f64; 3]], out: &mut [Placed]) {
+        let fp = self.face_ptr[e];
+        for (t, o) in self.triangles(e).iter().zip(out) {
+            let face = self.face_corners[fp + t.face as usize];
+            let q = triangle_points(t, face, corners);
+            let n = cross(sub(q[1], q[0]), sub(q[2], q[0]));
+            let len = dot(n, n).sqrt();
+            let unit = if len == 0.0 { [0.0; 3] } else { n.map(|v| v / len) };
+            *o = Placed { q, n, unit };
+        }
+    }
+
     /// The outward normals (rotated by `r`) of the exterior faces of element
     /// `e` that hold its local corner `c`, appended to `out`.
     pub fn vertex_normals(&self, e: usize, c: usize, r: &Mat3, out: &mut Vec<[f64; 3]>) {
@@ -143,6 +158,16 @@ impl Faces {
     }
 }
 
+/// A face triangle where it is now: its three points and `(q1 - q0) x (q2 - q0)`
+/// (outward, twice its area long).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Placed {
+    pub q: [[f64; 3]; 3],
+    pub n: [f64; 3],
+    /// `n` made unit (zero for a degenerate triangle).
+    pub unit: [f64; 3],
+}
+
 /// Where a vertex touches a face: the triangle's points as weighted sums of
 /// the face block's local corners (up to 4 for the centroid of a quad face,
 /// plus the two edge corners).
@@ -192,8 +217,8 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 
-/// The narrow phase of one vertex `p` against block `e` (its corners now in
-/// `corners`): the contact point if the vertex is within `reach` of the block
+/// The narrow phase of one vertex `p` against block `e` (its triangles now
+/// in `placed`): the contact point if the vertex is within `reach` of the block
 /// and projects on the triangle of its largest signed distance; None if it is
 /// farther or beside the block (an edge or corner region: no vertex-face
 /// contact there).
@@ -203,43 +228,46 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
 /// of the vertex's own exterior faces now: a triangle counts only if one of
 /// them faces it (`-n_f . n_t > 1/2`, within 60 degrees), so that a vertex
 /// on the plane of a side face of the other block (two blocks flush along
-/// a side) is judged by the faces that meet, not by that plane.
+/// a side) is judged by the faces that meet, not by that plane; and only if
+/// the vertex is less than `depth` (the largest penetration allowed) behind
+/// its plane: a plane it is farther behind is the block's far side.
+///
+/// Also returns the largest signed distance of the vertex to the planes of
+/// all the block's triangles: when that is negative the vertex is inside
+/// every one of them, so inside the block by at least as much (the missed
+/// contact's test).
 pub fn vertex_face(
     faces: &Faces,
     e: usize,
-    corners: &[[f64; 3]],
+    placed: &[Placed],
     p: [f64; 3],
-    reach: f64,
+    (reach, depth): (f64, f64),
     near: &[u16],
     opposing: &[[f64; 3]],
-) -> Option<FacePoint> {
+) -> (Option<FacePoint>, f64) {
     let fp = faces.face_ptr[e];
     let all = faces.triangles(e);
-    let mut tris = [all[0]; 24];
-    for (k, &i) in near.iter().enumerate() {
-        tris[k] = all[i as usize];
-    }
-    let tris = &tris[..near.len()];
+    let inside_all = placed
+        .iter()
+        .filter(|t| t.unit != [0.0; 3])
+        .map(|t| dot(sub(p, t.q[0]), t.unit))
+        .fold(f64::NEG_INFINITY, f64::max);
     let mut best_gap = f64::NEG_INFINITY;
     let mut planes = [([0.0; 3], f64::NEG_INFINITY); 24];
-    for (k, t) in tris.iter().enumerate() {
-        let face = faces.face_corners[fp + t.face as usize];
-        let [q0, q1, q2] = triangle_points(t, face, corners);
-        let n = cross(sub(q1, q0), sub(q2, q0));
-        let len = dot(n, n).sqrt();
-        if len == 0.0 {
-            continue;
-        }
-        let n = n.map(|v| v / len);
-        if !opposing.iter().any(|&nf| -dot(nf, n) > 0.5) {
+    for (k, &i) in near.iter().enumerate() {
+        let Placed { q: [q0, _, _], unit: n, .. } = placed[i as usize];
+        if n == [0.0; 3] || !opposing.iter().any(|&nf| -dot(nf, n) > 0.5) {
             continue;
         }
         let g = dot(sub(p, q0), n);
+        if g < -depth {
+            continue;
+        }
         planes[k] = (n, g);
         best_gap = best_gap.max(g);
     }
     if best_gap > reach {
-        return None;
+        return (None, inside_all);
     }
     // The triangle the vertex projects on (up to `EDGE_SLACK` of its size
     // outside its edges: two blocks flush along a side put every vertex on an
@@ -247,15 +275,20 @@ pub fn vertex_face(
     // nearest to, inside or out. Warped faces are not planar, so the four
     // triangles of one face need not agree on the distance. Ties (within a
     // rounding band): the one the vertex projects on most squarely.
+    // Only triangles within `reach` of the largest distance: for a convex
+    // block the vertex is at least `best_gap` from it, so a plane it is far
+    // inside (the far side of a corner it sits just beside) is not its
+    // contact; where the nearest triangles miss its projection there is none.
     let band = 1e-9 * reach.max(best_gap.abs());
     let mut chosen: Option<FacePoint> = None;
-    for (k, t) in tris.iter().enumerate() {
+    for (k, &i) in near.iter().enumerate() {
         let (n, g) = planes[k];
-        if g == f64::NEG_INFINITY || chosen.is_some_and(|c| g < c.gap - band) {
+        if g == f64::NEG_INFINITY || g < best_gap - reach || chosen.is_some_and(|c| g < c.gap - band) {
             continue;
         }
+        let t = &all[i as usize];
         let face = faces.face_corners[fp + t.face as usize];
-        let [q0, q1, q2] = triangle_points(t, face, corners);
+        let [q0, q1, q2] = placed[i as usize].q;
         // Barycentric coordinates of the projection.
         let q = sub(p, n.map(|v| v * g));
         let (e0, e1, w) = (sub(q1, q0), sub(q2, q0), sub(q, q0));
@@ -295,17 +328,13 @@ pub fn vertex_face(
         }
         chosen = Some(fpnt);
     }
-    chosen.filter(|c| c.gap <= reach)
+    (chosen.filter(|c| c.gap <= reach), inside_all)
 }
 
 /// Whether `point`, moved along `n`, lands on one of the exterior triangles
-/// of block `e` (its corners now in `corners`) that face `n`, within [`EDGE_SLACK`].
-pub fn covers(faces: &Faces, e: usize, corners: &[[f64; 3]], point: [f64; 3], n: [f64; 3]) -> bool {
-    let fp = faces.face_ptr[e];
-    faces.triangles(e).iter().any(|t| {
-        let face = faces.face_corners[fp + t.face as usize];
-        let [q0, q1, q2] = triangle_points(t, face, corners);
-        let nt = cross(sub(q1, q0), sub(q2, q0));
+/// of a block (its triangles now in `placed`) that face `n`, within [`EDGE_SLACK`].
+pub fn covers(placed: &[Placed], point: [f64; 3], n: [f64; 3]) -> bool {
+    placed.iter().any(|&Placed { q: [q0, q1, q2], n: nt, .. }| {
         // Only the triangles that face the contact.
         if dot(nt, n) <= 0.0 {
             return false;

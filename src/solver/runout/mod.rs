@@ -4,7 +4,7 @@
 //!
 //! One step is a short list of named stages:
 //! 1. **blocks**: each element's corotational force and rotation
-//!    ([`corotated_force`]), its strain energy;
+//!    ([`corotated_force_from`], from its rotation at the last step), its strain energy;
 //! 2. **joints**: the springs that still bond two parts of one intact body,
 //!    by the joint law with the normal turned by the block's rotation;
 //! 3. **contacts**: re-detect where a node has moved more than half the
@@ -33,7 +33,7 @@ use crate::error::SolveError;
 use crate::model::union_find::UnionFind;
 use crate::model::Model;
 use crate::physics::contact::{contact_force, ContactHistory, ContactLaw};
-use crate::physics::corotation::{corotated_force, rotate, Mat3, IDENTITY};
+use crate::physics::corotation::{corotated_force_from, rotate, Mat3, IDENTITY};
 use crate::physics::joint::{CoulombJoint, JointLaw, JointState};
 use crate::physics::spring::{spring_contact_force, Spring, SpringState, SpringStatus};
 use contact::{block_box, sweep, vertex_face, Faces};
@@ -185,6 +185,12 @@ pub struct Runout {
     mapped: bool,
     candidates: Vec<Candidate>,
     cand_tris: Vec<u16>,
+    /// The blocks a candidate vertex may touch (sorted), where each one's
+    /// triangles start in `placed` (`u32::MAX` for the others), and the
+    /// triangles placed at this step.
+    placed_elems: Vec<u32>,
+    placed_at: Vec<u32>,
+    placed: Vec<contact::Placed>,
     /// The forces a released spring left at a node (compression, N; shear on
     /// the node, N), taken up by that node's first new contact.
     pending: BTreeMap<u32, ContactHistory>,
@@ -331,6 +337,9 @@ impl Runout {
             mapped: false,
             candidates: Vec::new(),
             cand_tris: Vec::new(),
+            placed_elems: Vec::new(),
+            placed_at: vec![u32::MAX; el.len()],
+            placed: Vec::new(),
             history: BTreeMap::new(),
             pending: BTreeMap::new(),
             f_elem: vec![0.0; 24 * el.len()],
@@ -505,6 +514,17 @@ impl Runout {
         }
         let body = &self.body;
         candidates.sort_by_key(|c: &Candidate| (c.node, body[c.face_elem as usize], c.face_elem));
+        let mut placed_elems: Vec<u32> = candidates.iter().map(|c| c.face_elem).collect();
+        placed_elems.sort_unstable();
+        placed_elems.dedup();
+        self.placed_at.fill(u32::MAX);
+        let mut at = 0;
+        for &e in &placed_elems {
+            self.placed_at[e as usize] = at as u32;
+            at += self.faces.triangles(e as usize).len();
+        }
+        self.placed.resize(at, contact::Placed::default());
+        self.placed_elems = placed_elems;
         self.candidates = candidates;
         self.cand_tris = tris;
         self.x_map = x.to_vec();
@@ -534,7 +554,7 @@ impl Runout {
                 for (k, &c) in corners.iter().enumerate() {
                     (x0[k], xe[k]) = (model.x0[c as usize], x[c as usize]);
                 }
-                let c = corotated_force(el.stiffness(e), &x0[..m], &xe[..m], &mut f[..3 * m]);
+                let c = corotated_force_from(r, el.stiffness(e), &x0[..m], &xe[..m], &mut f[..3 * m]);
                 (*r, *w) = (c.rotation, c.energy);
             },
         );
@@ -555,28 +575,46 @@ impl Runout {
         let sp = &model.springs;
         let mut spring_energy = 0.0;
         let mut input = 0.0;
-        for s in (0..sp.len()).filter(|&s| self.bonded[s]) {
+        // Each spring's force, the work put in over the step (trapezoid) and
+        // what it stores now, in parallel; then summed in spring order.
+        let (bonded, rotations, node_elems, dt) = (&self.bonded, &self.rotations, &self.node_elems, self.dt);
+        let (u, v, strength) = (&st.u, &st.v, &st.joints.strength);
+        let per_spring: Vec<([f64; 3], f64, f64)> = st
+            .springs
+            .slip
+            .par_iter_mut()
+            .zip(st.springs.status.par_iter_mut())
+            .zip(self.spring_force_prev.par_iter_mut())
+            .enumerate()
+            .map(|(s, ((slip, status), prev))| {
+                if !bonded[s] {
+                    return ([0.0; 3], 0.0, 0.0);
+                }
+                let (a, b) = (sp.a[s] as usize, sp.b[s] as usize);
+                let normal = rotate(&rotations[node_elems[a][0].0 as usize], sp.normal[s]);
+                let spring = Spring { kn: sp.kn[s], ks: sp.ks[s], normal, area: sp.area[s] };
+                let d = [0, 1, 2].map(|k| u[3 * b + k] - u[3 * a + k]);
+                let fa = match &strength[s] {
+                    Some(strength) => law.force(&spring, d, strength, slip, status),
+                    None => spring_contact_force(sp.kn[s], sp.ks[s], normal, d, *slip, *status),
+                };
+                let dd = [0, 1, 2].map(|k| (v[3 * b + k] - v[3 * a + k]) * dt);
+                let input = (0..3).map(|k| 0.5 * (prev[k] + fa[k]) * dd[k]).sum::<f64>();
+                *prev = fa;
+                let fn_ = fa[0] * normal[0] + fa[1] * normal[1] + fa[2] * normal[2];
+                let fs2 = (0..3).map(|k| (fa[k] - fn_ * normal[k]).powi(2)).sum::<f64>();
+                let stored = 0.5 * fn_ * fn_ / sp.kn[s] + if sp.ks[s] > 0.0 { 0.5 * fs2 / sp.ks[s] } else { 0.0 };
+                (fa, input, stored)
+            })
+            .collect();
+        for (s, (fa, put_in, stored)) in per_spring.into_iter().enumerate().filter(|&(s, _)| self.bonded[s]) {
             let (a, b) = (sp.a[s] as usize, sp.b[s] as usize);
-            let ea = self.node_elems[a][0].0 as usize;
-            let normal = rotate(&self.rotations[ea], sp.normal[s]);
-            let spring = Spring { kn: sp.kn[s], ks: sp.ks[s], normal, area: sp.area[s] };
-            let d = [0, 1, 2].map(|k| st.u[3 * b + k] - st.u[3 * a + k]);
-            let fa = match &st.joints.strength[s] {
-                Some(strength) => law.force(&spring, d, strength, &mut st.springs.slip[s], &mut st.springs.status[s]),
-                None => spring_contact_force(sp.kn[s], sp.ks[s], normal, d, st.springs.slip[s], st.springs.status[s]),
-            };
             for k in 0..3 {
                 f_int[3 * a + k] -= fa[k];
                 f_int[3 * b + k] += fa[k];
             }
-            // Energy put in over the step (trapezoid) and stored now.
-            let dd = [0, 1, 2].map(|k| (st.v[3 * b + k] - st.v[3 * a + k]) * self.dt);
-            let prev = self.spring_force_prev[s];
-            input += (0..3).map(|k| 0.5 * (prev[k] + fa[k]) * dd[k]).sum::<f64>();
-            self.spring_force_prev[s] = fa;
-            let fn_ = fa[0] * normal[0] + fa[1] * normal[1] + fa[2] * normal[2];
-            let fs2 = (0..3).map(|k| (fa[k] - fn_ * normal[k]).powi(2)).sum::<f64>();
-            spring_energy += 0.5 * fn_ * fn_ / sp.kn[s] + if sp.ks[s] > 0.0 { 0.5 * fs2 / sp.ks[s] } else { 0.0 };
+            input += put_in;
+            spring_energy += stored;
         }
         if st.step > 0 {
             self.spring_input += input;
@@ -604,11 +642,39 @@ impl Runout {
             }
             out
         };
-        let found: Vec<Option<contact::FacePoint>> = self
+        // The triangles of the blocks the candidates may touch, placed once.
+        let mut chunks = Vec::with_capacity(self.placed_elems.len());
+        let mut rest = &mut self.placed[..];
+        for &e in &self.placed_elems {
+            let (chunk, tail) = rest.split_at_mut(self.faces.triangles(e as usize).len());
+            chunks.push((e as usize, chunk));
+            rest = tail;
+        }
+        let faces = &self.faces;
+        chunks.into_par_iter().for_each(|(e, out)| faces.place(e, &corners_of(e), out));
+        let placed_of = |e: usize| -> &[contact::Placed] {
+            let at = self.placed_at[e] as usize;
+            &self.placed[at..at + self.faces.triangles(e).len()]
+        };
+        let found: Vec<(Option<contact::FacePoint>, f64)> = self
             .candidates
             .par_iter()
-            .map(|c| self.near_face(c.face_elem as usize, &corners_of(c.face_elem as usize), x[c.node as usize], c))
+            .map(|c| self.near_face(c.face_elem as usize, placed_of(c.face_elem as usize), x[c.node as usize], c))
             .collect();
+        // A vertex inside every face plane of a block, deeper than the
+        // allowed penetration: a missed contact.
+        if let Some((c, (_, inside))) =
+            self.candidates.iter().zip(&found).find(|(_, f)| f.1 < -self.params.max_penetration)
+        {
+            let vertex_elem = self.node_elems[c.node as usize][0].0 as usize;
+            return Err(SolveError::Interpenetration {
+                step: st.step,
+                a: el.tag[vertex_elem],
+                b: el.tag[c.face_elem as usize],
+                depth: -inside,
+            });
+        }
+        let found: Vec<Option<contact::FacePoint>> = found.into_iter().map(|f| f.0).collect();
         // 3b. One contact per vertex and body (candidates are sorted so): the
         // face point of the largest gap, of equals the most squarely inside;
         // the shear history follows the vertex across the body's faces.
@@ -651,8 +717,7 @@ impl Runout {
                 let over = |point: [f64; 3]| {
                     range.clone().any(|k| {
                         let c = &self.candidates[k];
-                        let fe = c.face_elem as usize;
-                        contact::covers(&self.faces, fe, &corners_of(fe), point, fp.normal)
+                        contact::covers(placed_of(c.face_elem as usize), point, fp.normal)
                     })
                 };
                 let mut area = 0.0;
@@ -706,15 +771,6 @@ impl Runout {
                 None => continue,
             };
             let r = contact_force(&law, fp.normal, ds, &mut h);
-            if fp.gap < -self.params.max_penetration {
-                let vertex_elem = self.node_elems[node as usize][0].0 as usize;
-                return Err(SolveError::Interpenetration {
-                    step: st.step,
-                    a: el.tag[vertex_elem],
-                    b: el.tag[fe as usize],
-                    depth: -fp.gap,
-                });
-            }
             if r.normal > 0.0 {
                 contacts += 1;
                 sliding += usize::from(r.slipping);
@@ -794,12 +850,19 @@ impl Runout {
     }
 
     /// The triangle a candidate vertex touches now, among its near ones.
-    fn near_face(&self, fe: usize, corners: &[[f64; 3]], p: [f64; 3], cand: &Candidate) -> Option<contact::FacePoint> {
+    fn near_face(
+        &self,
+        fe: usize,
+        placed: &[contact::Placed],
+        p: [f64; 3],
+        cand: &Candidate,
+    ) -> (Option<contact::FacePoint>, f64) {
         let mut normals = Vec::with_capacity(12);
         for &(e, c) in &self.node_elems[cand.node as usize] {
             self.faces.vertex_normals(e as usize, c as usize, &self.rotations[e as usize], &mut normals);
         }
-        vertex_face(&self.faces, fe, corners, p, self.params.tolerance, &self.cand_tris[cand.tris.clone()], &normals)
+        let reach = (self.params.tolerance, self.params.max_penetration);
+        vertex_face(&self.faces, fe, placed, p, reach, &self.cand_tris[cand.tris.clone()], &normals)
     }
 
     /// Steps until the mass is at rest or the duration ends; `watch` sees
