@@ -213,7 +213,13 @@ pub struct Runout {
     /// Per element: the contact stiffness limit (Pa/m), empty for none.
     contact_limit: Vec<f64>,
     pub remaps: usize,
+    /// Wall time spent in each stage of [`Runout::step`] so far (s), in the
+    /// order of [`STAGES`]: what a profile of the runout reads first.
+    pub stage_seconds: [f64; 5],
 }
+
+/// The stages of a runout step, as [`Runout::stage_seconds`] counts them.
+pub const STAGES: [&str; 5] = ["blocks", "joints", "broad phase", "contacts", "update"];
 
 /// The result of a runout.
 #[derive(Debug, Clone)]
@@ -356,6 +362,7 @@ impl Runout {
             fixed_elem,
             contact_limit,
             remaps: 0,
+            stage_seconds: [0.0; 5],
         };
         me.hand_over(model, springs, joints, u);
         Ok(me)
@@ -542,6 +549,12 @@ impl Runout {
         }
         let x: Vec<[f64; 3]> = (0..n).map(|i| [0, 1, 2].map(|d| model.x0[i][d] + st.u[3 * i + d])).collect();
 
+        let mut clock = std::time::Instant::now();
+        let mut lap = |stage: usize, seconds: &mut [f64; 5]| {
+            let now = std::time::Instant::now();
+            seconds[stage] += (now - clock).as_secs_f64();
+            clock = now;
+        };
         // 1. Blocks: corotational forces.
         let fe = &mut self.f_elem;
         let rot = &mut self.rotations;
@@ -570,6 +583,7 @@ impl Runout {
         }
         let mut elastic: f64 = self.elem_energy.iter().sum();
 
+        lap(0, &mut self.stage_seconds);
         // 2. Joints: bonded springs, the normal turned with block a.
         let law = CoulombJoint;
         let sp = &model.springs;
@@ -624,13 +638,15 @@ impl Runout {
         // broad phase runs again: bodies may have split).
         self.hand_over(model, &st.springs, &st.joints, &st.u);
 
-        // 3. Contacts.
+        lap(1, &mut self.stage_seconds);
+        // 3. Contacts (the re-detection test and the broad phase, then the narrow phase and the forces).
         let half = 0.5 * self.params.tolerance;
         let remap = !self.mapped
             || (0..n).any(|i| (0..3).map(|d| (x[i][d] - self.x_map[i][d]).powi(2)).sum::<f64>() > half * half);
         if remap {
             self.map(model, &x);
         }
+        lap(2, &mut self.stage_seconds);
         let dt = self.dt;
         // 3a. Narrow phase: where each candidate vertex touches its block.
         // An element's corners now, on the stack (at most 8).
@@ -791,6 +807,7 @@ impl Runout {
         }
         self.history = history;
 
+        lap(3, &mut self.stage_seconds);
         // 4. Update: damping and central differences.
         let mut damping_work = 0.0;
         let mut kinetic = 0.0;
@@ -821,6 +838,7 @@ impl Runout {
             max_speed = max_speed.max(speed2.sqrt());
         }
         self.f_int = f_int;
+        lap(4, &mut self.stage_seconds);
         // 5. Monitor: the energy terms at this step (positions x_n, velocity v_n).
         if !kinetic.is_finite() || !elastic.is_finite() {
             let node = (0..st.u.len()).find(|&k| !st.u[k].is_finite() || !st.v[k].is_finite()).unwrap_or(0) / 3;
