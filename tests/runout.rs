@@ -150,4 +150,8 @@ fn a_bad_runout_key_is_refused_naming_it() {
     assert!(err.contains("runout.duration"), "{err}");
     let scene = scene_with("at-rest", "[runout]\nduration = 1.0\ndampign = \"local\"\n");
     assert!(cdem::scene::Scene::load(&scene).is_err());
+    // Water's forces do not follow moving blocks: a runout with [water] is refused.
+    let scene = scene_with("at-rest", "[runout]\nduration = 1.0\n\n[water]\nsurface = [[-100.0, 1.0], [100.0, 1.0]]\n");
+    let err = cdem::scene::Scene::load(&scene).unwrap_err().to_string();
+    assert!(err.contains("runout") && err.contains("[water]"), "{err}");
 }

@@ -143,6 +143,15 @@ pub(super) fn validate(s: &Scene) -> Result<(), SceneError> {
     }
     if let Some(r) = &s.runout {
         r.validate()?;
+        // The water's forces are fixed on the nodes where the static phases
+        // put them: a block that leaves the slope would keep its push
+        // (references/runout.md, "Wulong after rain run out").
+        if s.water.is_some() {
+            return Err(SceneError::invalid(
+                "runout",
+                "a runout with [water] is not supported: the pore pressures would stay on the blocks where phase 1 put them, so a block that leaves the slope would keep its push; run the runout without [water]",
+            ));
+        }
     }
     if let Some(a) = &s.analysis {
         let interfaces: Vec<&str> = s.interface.iter().map(|i| i.group.as_str()).collect();
