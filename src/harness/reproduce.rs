@@ -162,7 +162,7 @@ fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Err
     for case in suite::srm::run_all()? {
         rep.checks.push(case.row);
     }
-    progress("runout: 3DEC's sliding and toppling blocks, launched and dropped blocks (about 30 s)");
+    progress("runout: 3DEC's sliding and toppling blocks, launched and dropped blocks, the paper slope run out to rest (about 3 min)");
     rep.checks.extend(suite::runout::rows()?);
     progress("plastic blocks: the Mohr-Coulomb limit of one hexahedron");
     rep.checks.push(suite::plastic::element_limit_row().0);
