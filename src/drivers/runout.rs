@@ -56,16 +56,16 @@ pub fn moved(model: &Model, u0: &[f64], u1: &[f64], distance: f64, e: usize) -> 
         })
 }
 
-/// The path of the moved mass's centre of mass (the lumped masses of the
-/// blocks that [`moved`]) from `u0` to `u1`: its drop along gravity and its
-/// travel across it (m). The work of gravity on the moved mass is
-/// `M |g| drop`; `drop / travel` is the slope of its energy line (the sled
-/// model's `tan(phi)`, references/runout.md).
-pub fn centre_of_mass_path(model: &Model, u0: &[f64], u1: &[f64], distance: f64) -> (f64, f64) {
+/// The path of the centre of mass of the blocks `deposit` (the lumped masses
+/// of their nodes) from `u0` to `u1`: its drop along gravity and its travel
+/// across it (m). The work of gravity on them is `M |g| drop`; `drop /
+/// travel` is the slope of their energy line (the sled model's `tan(phi)`,
+/// references/runout.md).
+pub fn centre_of_mass_path(model: &Model, u0: &[f64], u1: &[f64], deposit: &[usize]) -> (f64, f64) {
     let el = &model.elements;
     let mut counted = vec![false; model.n_nodes()];
     let (mut m, mut shift) = (0.0, [0.0; 3]);
-    for e in (0..el.len()).filter(|&e| moved(model, u0, u1, distance, e)) {
+    for &e in deposit {
         for &n in el.corners(e) {
             let n = n as usize;
             if !std::mem::replace(&mut counted[n], true) {
@@ -155,22 +155,20 @@ pub fn run(section: &RunoutSection, model: &Model, state: &State, end: EndState)
     let runout_distance = travel.max(travel_of(&st.u));
     // The deposit: the blocks that moved more than 1 % of the runout distance.
     let el = &model.elements;
+    let deposit: Vec<usize> = (0..el.len()).filter(|&e| moved(model, &u_start, &st.u, runout_distance, e)).collect();
     let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
     let mut moved_volume = 0.0;
-    for e in 0..el.len() {
-        let c = el.corners(e);
-        if moved(model, &u_start, &st.u, runout_distance, e) {
-            moved_volume += el.volume[e];
-            for &n in c {
-                for d in 0..3 {
-                    let x = model.x0[n as usize][d] + st.u[3 * n as usize + d];
-                    lo[d] = lo[d].min(x);
-                    hi[d] = hi[d].max(x);
-                }
+    for &e in &deposit {
+        moved_volume += el.volume[e];
+        for &n in el.corners(e) {
+            for d in 0..3 {
+                let x = model.x0[n as usize][d] + st.u[3 * n as usize + d];
+                lo[d] = lo[d].min(x);
+                hi[d] = hi[d].max(x);
             }
         }
     }
-    let (mass_drop, mass_travel) = centre_of_mass_path(model, &u_start, &st.u, runout_distance);
+    let (mass_drop, mass_travel) = centre_of_mass_path(model, &u_start, &st.u, &deposit);
     let e = end.energy;
     // The runout starts from rest: the budget is measured against gravity's work.
     let scale = e.gravity.abs();

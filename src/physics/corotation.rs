@@ -52,16 +52,13 @@ fn mean(points: &[[f64; 3]]) -> [f64; 3] {
 /// the polar factor of `A = sum_c (x_c - x_bar)(X_c - X_bar)^T`. Exact for a
 /// rigid motion; the identity for a block that has not moved.
 pub fn best_rotation(x0: &[[f64; 3]], x: &[[f64; 3]]) -> Mat3 {
-    let (c0, c) = (mean(x0), mean(x));
-    let mut a = Matrix3::<f64>::zeros();
-    for (p0, p) in x0.iter().zip(x) {
-        for i in 0..3 {
-            for j in 0..3 {
-                a[(i, j)] += (p[i] - c[i]) * (p0[j] - c0[j]);
-            }
-        }
-    }
-    let svd = a.svd(true, true);
+    polar_by_svd(&cross_covariance(x0, x))
+}
+
+/// The rotation nearest to `a` (its polar factor), by the singular value
+/// decomposition with the reflection removed.
+fn polar_by_svd(a: &Mat3) -> Mat3 {
+    let svd = Matrix3::from_fn(|i, j| a[i][j]).svd(true, true);
     let (Some(u), Some(vt)) = (svd.u, svd.v_t) else { return IDENTITY };
     let mut r = u * vt;
     if r.determinant() < 0.0 {
@@ -192,7 +189,7 @@ pub fn nearest_rotation(start: &Mat3, x0: &[[f64; 3]], x: &[[f64; 3]]) -> Mat3 {
             return quaternion_matrix(q);
         }
     }
-    best_rotation(x0, x)
+    polar_by_svd(&a)
 }
 
 /// The corners' deformation in the block's own frame,

@@ -86,9 +86,9 @@ pub struct RunoutSection {
     /// A `runout.pvd` frame every this many seconds (default: 20 frames over the duration).
     pub frame_every: Option<f64>,
     /// Limit every spring's and contact's stiffness to this many times the
-    /// stiffer neighbouring element's `(K + 4G/3) / dz_min` (the Itasca
-    /// codes' rule for joints in dynamic runs: 10). Default: none, the
-    /// stiffnesses as given.
+    /// softer neighbouring element's `(K + 4G/3) / dz_min` (within the Itasca
+    /// codes' rule for joints, at most 10 times the stiffer's). Default: none,
+    /// the stiffnesses as given.
     pub stiffness_limit: Option<f64>,
     #[serde(default)]
     pub contact: RunoutContactSection,
