@@ -294,30 +294,20 @@ impl Runout {
             let (a, b) = (elem_of(model.springs.a[s]), elem_of(model.springs.b[s]));
             pair_interface.entry((a.min(b), a.max(b))).or_insert(model.springs.interface[s]);
         }
-        // Time step: the elements' and springs' row sums, and the contacts'
-        // penalty at every exterior node.
-        let mut rows = crate::solver::timestep::stiffness_row_sums(model);
+        // Time step: Gershgorin's bound on each node's row of the stiffness
+        // (docs/method.md 2.13): the elements', and on each exterior face at
+        // the node either its spring (bonded: one body) or its contacts
+        // (released, or a block met anew), whichever is stiffer, never both.
         let contact_limit: Vec<f64> = match params.stiffness_limit {
             Some(f) => model.zone_stiffness().iter().map(|k| f * k).collect(),
             None => Vec::new(),
         };
         let kn_max = contact_kn_max(model, &params.contact);
-        let mut area = vec![0.0; n];
-        for e in 0..el.len() {
-            let fp = faces.face_ptr[e];
-            for (f, fc) in el.kind[e].faces().iter().enumerate() {
-                for &c in fc.iter() {
-                    area[el.corners(e)[c] as usize] += faces.face_share[fp + f];
-                }
-            }
-        }
         let node_limit = |i: usize| match contact_limit.is_empty() {
             true => f64::INFINITY,
             false => node_elems[i].iter().map(|&(e, _)| contact_limit[e as usize]).fold(f64::INFINITY, f64::min),
         };
-        for i in 0..n {
-            rows[i] += 4.0 * kn_max.min(node_limit(i)) * area[i];
-        }
+        let rows = face_row_bound(model, &faces, &node_elems, |i| kn_max.min(node_limit(i)));
         let lambda = rows.iter().zip(&model.mass).map(|(r, m)| r / m).fold(0.0, f64::max);
         let amplification = match params.damping {
             RunoutDamping::Local { alpha } => 1.0 + alpha,
@@ -951,6 +941,69 @@ impl std::ops::Deref for Corners {
     fn deref(&self) -> &[[f64; 3]] {
         &self.p[..self.len]
     }
+}
+
+/// Each node's bound on its row sums of the stiffness (N/m): its elements'
+/// ([`element_row_sums`]) and, per exterior face `f` at the node, the larger
+/// of the springs that leave the node through `f` (their blocks `K_aa` and
+/// `K_ab = -K_aa`: twice `K_aa`'s row) and the contacts it can make there
+/// with stiffness `kn(i)` per unit area: a vertex contact over the node's
+/// share `A_f` takes half of it (the other side's vertices the other half),
+/// and its row, with the face points' (weights summing to one), is at most
+/// `2 * 1.37 * kn A_f / 2` (1.37 bounds `|n_i| sum_j |n_j|`, 1.37 =
+/// (1 + sqrt 3)/2); the node as a face point of the other side's vertices
+/// takes as much again: `CONTACT_ROW kn A_f`, rounded up from 2.73. A spring
+/// belongs to the face of its node whose rest normal is nearest its own.
+fn face_row_bound(
+    model: &Model,
+    faces: &Faces,
+    node_elems: &[Vec<(u32, u8)>],
+    kn: impl Fn(usize) -> f64,
+) -> Vec<f64> {
+    const CONTACT_ROW: f64 = 3.0;
+    let mut rows = crate::solver::timestep::element_row_sums(model);
+    // Per node: (face index into `faces.face_*`, its bound so far from springs).
+    let mut node_faces: Vec<Vec<(usize, f64)>> = node_elems
+        .iter()
+        .map(|list| {
+            let mut out = Vec::new();
+            for &(e, c) in list {
+                for f in faces.face_ptr[e as usize]..faces.face_ptr[e as usize + 1] {
+                    if faces.face_share[f] > 0.0 && faces.face_corners[f].contains(&(c as usize)) {
+                        out.push((f, 0.0));
+                    }
+                }
+            }
+            out
+        })
+        .collect();
+    let mut loose = vec![0.0; rows.len()];
+    let sp = &model.springs;
+    for s in 0..sp.len() {
+        let n = sp.normal[s];
+        let row = (0..3)
+            .map(|i| {
+                (0..3)
+                    .map(|j| {
+                        let (nn, id) = (n[i] * n[j], if i == j { 1.0 } else { 0.0 });
+                        (sp.kn[s] * nn + sp.ks[s] * (id - nn)).abs()
+                    })
+                    .sum::<f64>()
+            })
+            .fold(0.0, f64::max);
+        for (node, sign) in [(sp.a[s] as usize, 1.0), (sp.b[s] as usize, -1.0)] {
+            let dot = |f: usize| (0..3).map(|d| sign * n[d] * faces.face_normal[f][d]).sum::<f64>();
+            match node_faces[node].iter_mut().max_by(|x, y| dot(x.0).total_cmp(&dot(y.0))) {
+                Some(face) => face.1 += 2.0 * row,
+                None => loose[node] += 2.0 * row,
+            }
+        }
+    }
+    for (i, list) in node_faces.iter().enumerate() {
+        let k = kn(i);
+        rows[i] += loose[i] + list.iter().map(|&(f, spring)| spring.max(CONTACT_ROW * k * faces.face_share[f])).sum::<f64>();
+    }
+    rows
 }
 
 /// The largest contact stiffness per unit area any pair can take (Pa/m).
