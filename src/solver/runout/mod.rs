@@ -8,9 +8,11 @@
 //! 2. **joints**: the springs that still bond two parts of one intact body,
 //!    by the joint law with the normal turned by the block's rotation;
 //! 3. **contacts**: re-detect where a node has moved more than half the
-//!    tolerance ([`contact`]'s broad phase), then every vertex-face contact's
-//!    penalty and Coulomb force ([`contact_force`]), with the interpenetration
-//!    check;
+//!    tolerance ([`contact`]'s broad phase); the narrow phase (where each
+//!    candidate vertex touches its block, with the interpenetration check;
+//!    a vertex clear of a body by more than it has moved is not looked at);
+//!    then every vertex-face contact's penalty and Coulomb force
+//!    ([`contact_force`]);
 //! 4. **update**: damping (none, local or mass-proportional Rayleigh) and
 //!    central differences with the physical masses (no mass scaling);
 //! 5. **monitor**: the energy terms, non-finite state, the moving mass.
@@ -185,6 +187,19 @@ pub struct Runout {
     mapped: bool,
     candidates: Vec<Candidate>,
     cand_tris: Vec<u16>,
+    /// The candidates of one vertex and one body: consecutive ranges.
+    cand_groups: Vec<std::ops::Range<usize>>,
+    /// Per candidate: how far (m) its vertex is at least from its block's
+    /// box, less the relative motion since ([`Self::step`]'s 3a): while
+    /// positive for every candidate of a vertex and body with no contact
+    /// history, that vertex cannot touch that body and is not looked at.
+    clearance: Vec<f64>,
+    /// Node positions at the last step.
+    x_prev: Vec<[f64; 3]>,
+    /// Per candidate: its group (index into `cand_groups`); per group:
+    /// whether its vertex and body are in contact (have a history).
+    cand_group: Vec<u32>,
+    touching: Vec<bool>,
     /// The blocks a candidate vertex may touch (sorted), where each one's
     /// triangles start in `placed` (`u32::MAX` for the others), and the
     /// triangles placed at this step.
@@ -215,11 +230,11 @@ pub struct Runout {
     pub remaps: usize,
     /// Wall time spent in each stage of [`Runout::step`] so far (s), in the
     /// order of [`STAGES`]: what a profile of the runout reads first.
-    pub stage_seconds: [f64; 5],
+    pub stage_seconds: [f64; 6],
 }
 
 /// The stages of a runout step, as [`Runout::stage_seconds`] counts them.
-pub const STAGES: [&str; 5] = ["blocks", "joints", "broad phase", "contacts", "update"];
+pub const STAGES: [&str; 6] = ["blocks", "joints", "broad phase", "narrow phase", "contact forces", "update"];
 
 /// The result of a runout.
 #[derive(Debug, Clone)]
@@ -333,6 +348,11 @@ impl Runout {
             mapped: false,
             candidates: Vec::new(),
             cand_tris: Vec::new(),
+            cand_groups: Vec::new(),
+            clearance: Vec::new(),
+            x_prev: Vec::new(),
+            cand_group: Vec::new(),
+            touching: Vec::new(),
             placed_elems: Vec::new(),
             placed_at: vec![u32::MAX; el.len()],
             placed: Vec::new(),
@@ -352,7 +372,7 @@ impl Runout {
             fixed_elem,
             contact_limit,
             remaps: 0,
-            stage_seconds: [0.0; 5],
+            stage_seconds: [0.0; 6],
         };
         me.hand_over(model, springs, joints, u);
         Ok(me)
@@ -522,6 +542,23 @@ impl Runout {
         }
         self.placed.resize(at, contact::Placed::default());
         self.placed_elems = placed_elems;
+        let mut groups = Vec::new();
+        let mut i = 0;
+        while i < candidates.len() {
+            let key = |c: &Candidate| (c.node, body[c.face_elem as usize]);
+            let j = i + candidates[i..].iter().take_while(|c| key(c) == key(&candidates[i])).count();
+            groups.push(i..j);
+            i = j;
+        }
+        self.cand_group = groups.iter().enumerate().flat_map(|(g, r)| r.clone().map(move |_| g as u32)).collect();
+        self.touching = groups
+            .iter()
+            .map(|r| {
+                self.history.contains_key(&(candidates[r.start].node, body[candidates[r.start].face_elem as usize]))
+            })
+            .collect();
+        self.cand_groups = groups;
+        self.clearance = vec![0.0; candidates.len()];
         self.candidates = candidates;
         self.cand_tris = tris;
         self.x_map = x.to_vec();
@@ -540,7 +577,7 @@ impl Runout {
         let x: Vec<[f64; 3]> = (0..n).map(|i| [0, 1, 2].map(|d| model.x0[i][d] + st.u[3 * i + d])).collect();
 
         let mut clock = std::time::Instant::now();
-        let mut lap = |stage: usize, seconds: &mut [f64; 5]| {
+        let mut lap = |stage: usize, seconds: &mut [f64; 6]| {
             let now = std::time::Instant::now();
             seconds[stage] += (now - clock).as_secs_f64();
             clock = now;
@@ -648,12 +685,54 @@ impl Runout {
             }
             out
         };
-        // The triangles of the blocks the candidates may touch, placed once.
+        // Each candidate's clearance less the motion of its vertex relative
+        // to its block's corners this step (the box of corners that each
+        // moved at most m relative to the vertex is at most m nearer it):
+        // `|dv - dq| <= |dv - d0| + max_q |dq - d0|` with `d0` the block's
+        // first corner's step and the maximum taken once per block.
+        let (x_prev, candidates) = (&self.x_prev, &self.candidates);
+        if !x_prev.is_empty() {
+            let step_of = |i: usize| [0, 1, 2].map(|d| x[i][d] - x_prev[i][d]);
+            let dist = |a: [f64; 3], b: [f64; 3]| (0..3).map(|d| (a[d] - b[d]).powi(2)).sum::<f64>().sqrt();
+            let spread: Vec<f64> = (0..el.len())
+                .into_par_iter()
+                .map(|e| {
+                    let d0 = step_of(el.corners(e)[0] as usize);
+                    el.corners(e).iter().map(|&q| dist(step_of(q as usize), d0)).fold(0.0, f64::max)
+                })
+                .collect();
+            self.clearance.par_iter_mut().zip(candidates.par_iter()).for_each(|(clear, c)| {
+                let fe = c.face_elem as usize;
+                *clear -= dist(step_of(c.node as usize), step_of(el.corners(fe)[0] as usize)) + spread[fe];
+            });
+        }
+        // A vertex and body are looked at if they are in contact or any of
+        // their candidates may be within reach of touching.
+        let clearance = &self.clearance;
+        let awake: Vec<bool> = (self.cand_groups.par_iter().zip(self.touching.par_iter()))
+            .map(|(r, &touching)| touching || r.clone().any(|k| clearance[k] <= 0.0))
+            .collect();
+        // The candidates looked at, group by group (`looked[o..]` for the
+        // group at `o`), and where each one's vertex touches its block.
+        let mut looked: Vec<u32> = Vec::new();
+        let mut awake_groups: Vec<(usize, usize)> = Vec::new();
+        for (g, r) in self.cand_groups.iter().enumerate().filter(|&(g, _)| awake[g]) {
+            awake_groups.push((g, looked.len()));
+            looked.extend(r.clone().map(|k| k as u32));
+        }
+        // The triangles of the blocks the looked-at vertices may touch, placed once.
+        let mut need = vec![false; self.placed_elems.len()];
+        for &k in &looked {
+            let e = self.candidates[k as usize].face_elem as usize;
+            need[self.placed_elems.binary_search(&(e as u32)).unwrap_or(0)] = true;
+        }
         let mut chunks = Vec::with_capacity(self.placed_elems.len());
         let mut rest = &mut self.placed[..];
-        for &e in &self.placed_elems {
+        for (&e, &need) in self.placed_elems.iter().zip(&need) {
             let (chunk, tail) = rest.split_at_mut(self.faces.triangles(e as usize).len());
-            chunks.push((e as usize, chunk));
+            if need {
+                chunks.push((e as usize, chunk));
+            }
             rest = tail;
         }
         let faces = &self.faces;
@@ -662,16 +741,27 @@ impl Runout {
             let at = self.placed_at[e] as usize;
             &self.placed[at..at + self.faces.triangles(e).len()]
         };
-        let found: Vec<(Option<contact::FacePoint>, f64)> = self
-            .candidates
+        let found: Vec<(Option<contact::FacePoint>, f64, f64)> = looked
             .par_iter()
-            .map(|c| self.near_face(c.face_elem as usize, placed_of(c.face_elem as usize), x[c.node as usize], c))
+            .map_init(
+                || Vec::with_capacity(24),
+                |normals, &k| {
+                    let c = &self.candidates[k as usize];
+                    let fe = c.face_elem as usize;
+                    let p = x[c.node as usize];
+                    let (fp, inside) = self.near_face(fe, placed_of(fe), p, c, normals);
+                    (fp, inside, box_clearance(&corners_of(fe), p))
+                },
+            )
             .collect();
+        for (&k, f) in looked.iter().zip(&found) {
+            self.clearance[k as usize] = f.2;
+        }
         // A vertex inside every face plane of a block, deeper than the
         // allowed penetration: a missed contact.
-        if let Some((c, (_, inside))) =
-            self.candidates.iter().zip(&found).find(|(_, f)| f.1 < -self.params.max_penetration)
+        if let Some((&k, (_, inside, _))) = looked.iter().zip(&found).find(|(_, f)| f.1 < -self.params.max_penetration)
         {
+            let c = &self.candidates[k as usize];
             let vertex_elem = self.node_elems[c.node as usize][0].0 as usize;
             return Err(SolveError::Interpenetration {
                 step: st.step,
@@ -684,20 +774,14 @@ impl Runout {
         // 3b. One contact per vertex and body (candidates are sorted so): the
         // face point of the largest gap, of equals the most squarely inside;
         // the shear history follows the vertex across the body's faces.
-        let mut groups: Vec<(std::ops::Range<usize>, usize)> = Vec::new();
-        let same = |i: usize, j: usize| {
-            let (a, b) = (&self.candidates[i], &self.candidates[j]);
-            a.node == b.node && self.body[a.face_elem as usize] == self.body[b.face_elem as usize]
-        };
+        // Each: the group's candidates, the chosen one's candidate and
+        // `found` index, the group.
         let band = 1e-9 * self.params.tolerance;
-        let mut i = 0;
-        while i < found.len() {
-            let mut j = i + 1;
-            while j < found.len() && same(i, j) {
-                j += 1;
-            }
+        let mut groups: Vec<(std::ops::Range<usize>, usize, usize, usize)> = Vec::new();
+        for &(g, o) in &awake_groups {
+            let range = self.cand_groups[g].clone();
             let mut best: Option<usize> = None;
-            for k in i..j {
+            for k in o..o + range.len() {
                 let Some(fp) = &found[k] else { continue };
                 let better = match best.and_then(|b| found[b].as_ref()) {
                     None => true,
@@ -708,18 +792,22 @@ impl Runout {
                 }
             }
             if let Some(b) = best {
-                groups.push((i..j, b));
+                groups.push((range.clone(), range.start + b - o, b, g));
             }
-            i = j;
         }
+        lap(3, &mut self.stage_seconds);
         // 3c. Each contact's law (its area: the vertex's faces that face the
         // contact and whose share lies over the other body) and its relative
         // motion this step.
         let inputs: Vec<Option<(ContactLaw, [f64; 3])>> = groups
             .par_iter()
-            .map(|(range, b)| {
+            .map(|(range, b, bf, g)| {
                 let cand = &self.candidates[*b];
-                let fp = found[*b].as_ref()?;
+                let fp = found[*bf].as_ref()?;
+                // Only a vertex inside, or one that was in contact, makes a contact (below).
+                if fp.gap >= 0.0 && !self.touching[*g] {
+                    return None;
+                }
                 let over = |point: [f64; 3]| {
                     range.clone().any(|k| {
                         let c = &self.candidates[k];
@@ -755,16 +843,17 @@ impl Runout {
                 Some((law, ds))
             })
             .collect();
-        let chosen = groups.iter().zip(inputs).filter_map(|((_, b), input)| {
+        let chosen = groups.iter().zip(inputs).filter_map(|((_, b, bf, g), input)| {
             let (law, ds) = input?;
             let c = &self.candidates[*b];
-            Some((c.node, c.face_elem, law, found[*b]?, ds))
+            Some((c.node, c.face_elem, law, found[*bf]?, ds, *g))
         });
         let chosen: Vec<_> = chosen.collect();
         let mut history = BTreeMap::new();
         let (mut contacts, mut sliding) = (0, 0);
         let mut friction = 0.0;
-        for (node, fe, law, fp, ds) in chosen {
+        self.touching.fill(false);
+        for (node, fe, law, fp, ds, g) in chosen {
             let key = (node, self.body[fe as usize]);
             // A new contact (only where the vertex is inside the face) takes
             // half (the other side's vertex takes the other half) of what a
@@ -781,6 +870,7 @@ impl Runout {
                 contacts += 1;
                 sliding += usize::from(r.slipping);
                 history.insert(key, h);
+                self.touching[g] = true;
             }
             friction += r.dissipated;
             elastic += r.energy;
@@ -797,7 +887,7 @@ impl Runout {
         }
         self.history = history;
 
-        lap(3, &mut self.stage_seconds);
+        lap(4, &mut self.stage_seconds);
         // 4. Update: damping and central differences.
         let mut damping_work = 0.0;
         let mut kinetic = 0.0;
@@ -828,7 +918,8 @@ impl Runout {
             max_speed = max_speed.max(speed2.sqrt());
         }
         self.f_int = f_int;
-        lap(4, &mut self.stage_seconds);
+        self.x_prev = x;
+        lap(5, &mut self.stage_seconds);
         // 5. Monitor: the energy terms at this step (positions x_n, velocity v_n).
         if !kinetic.is_finite() || !elastic.is_finite() {
             let node = (0..st.u.len()).find(|&k| !st.u[k].is_finite() || !st.v[k].is_finite()).unwrap_or(0) / 3;
@@ -864,13 +955,14 @@ impl Runout {
         placed: &[contact::Placed],
         p: [f64; 3],
         cand: &Candidate,
+        normals: &mut Vec<[f64; 3]>,
     ) -> (Option<contact::FacePoint>, f64) {
-        let mut normals = Vec::with_capacity(12);
+        normals.clear();
         for &(e, c) in &self.node_elems[cand.node as usize] {
-            self.faces.vertex_normals(e as usize, c as usize, &self.rotations[e as usize], &mut normals);
+            self.faces.vertex_normals(e as usize, c as usize, &self.rotations[e as usize], normals);
         }
         let reach = (self.params.tolerance, self.params.max_penetration);
-        vertex_face(&self.faces, fe, placed, p, reach, &self.cand_tris[cand.tris.clone()], &normals)
+        vertex_face(&self.faces, fe, placed, p, reach, &self.cand_tris[cand.tris.clone()], normals)
     }
 
     /// Steps until the mass is at rest or the duration ends; `watch` sees
@@ -930,6 +1022,17 @@ pub fn moving_volume(model: &Model, v: &[f64], rest_velocity: f64) -> f64 {
         .sum()
 }
 
+/// How far `p` is at least from a block with corners `corners`, less the
+/// edge slack of a projection ([`contact::EDGE_SLACK`] of the block's size):
+/// the distance to the corners' box, which holds the block; where it is
+/// positive no face point of the block can lie behind the vertex.
+fn box_clearance(corners: &[[f64; 3]], p: [f64; 3]) -> f64 {
+    let (lo, hi) = block_box(corners.iter().copied(), 0.0);
+    let out = (0..3).map(|d| (lo[d] - p[d]).max(p[d] - hi[d]).max(0.0).powi(2)).sum::<f64>().sqrt();
+    let size = (0..3).map(|d| (hi[d] - lo[d]).powi(2)).sum::<f64>().sqrt();
+    out - 2.0 * contact::EDGE_SLACK * size
+}
+
 /// An element's corner positions, without a heap allocation.
 struct Corners {
     p: [[f64; 3]; 8],
@@ -954,12 +1057,7 @@ impl std::ops::Deref for Corners {
 /// (1 + sqrt 3)/2); the node as a face point of the other side's vertices
 /// takes as much again: `CONTACT_ROW kn A_f`, rounded up from 2.73. A spring
 /// belongs to the face of its node whose rest normal is nearest its own.
-fn face_row_bound(
-    model: &Model,
-    faces: &Faces,
-    node_elems: &[Vec<(u32, u8)>],
-    kn: impl Fn(usize) -> f64,
-) -> Vec<f64> {
+fn face_row_bound(model: &Model, faces: &Faces, node_elems: &[Vec<(u32, u8)>], kn: impl Fn(usize) -> f64) -> Vec<f64> {
     const CONTACT_ROW: f64 = 3.0;
     let mut rows = crate::solver::timestep::element_row_sums(model);
     // Per node: (face index into `faces.face_*`, its bound so far from springs).
@@ -1001,7 +1099,8 @@ fn face_row_bound(
     }
     for (i, list) in node_faces.iter().enumerate() {
         let k = kn(i);
-        rows[i] += loose[i] + list.iter().map(|&(f, spring)| spring.max(CONTACT_ROW * k * faces.face_share[f])).sum::<f64>();
+        rows[i] +=
+            loose[i] + list.iter().map(|&(f, spring)| spring.max(CONTACT_ROW * k * faces.face_share[f])).sum::<f64>();
     }
     rows
 }
