@@ -1,15 +1,25 @@
 //! # cdem — the continuum–discontinuum element method for jointed rock slopes
 //!
-//! Every element is a linear-elastic polyhedron (24 constant-strain tetrahedra
-//! for a hexahedron); neighbouring elements own separate copies of their shared
-//! nodes, joined by normal and shear springs; the static state is found by
-//! explicit dynamic relaxation. After Liu, Li & Liu (2014), restated in
-//! `docs/method.md`.
+//! Every element of a gmsh mesh (hexahedron, prism, tetrahedron; split into
+//! 24, 18 or 1 constant-strain tetrahedra) is a block of its material's law:
+//! linear elastic (its stiffness condensed to the corners), or an
+//! elastic-plastic Mohr-Coulomb rock mass where the scene gives the material a
+//! strength (a history per tetrahedron). Neighbouring elements own separate
+//! copies of their shared nodes, joined by normal and shear springs that break
+//! in tension or slip by Mohr-Coulomb, on the effective stress where the scene
+//! has `[water]`. The static state: phase 1 (elastic) by two-level
+//! preconditioned conjugate gradients or dynamic relaxation, phase 2
+//! (progressive failure) by explicit dynamic relaxation; `[runout]` follows the
+//! failed blocks in real time with large displacements and contacts found
+//! anew. After Liu, Li & Liu (2014), restated in `docs/method.md`.
 //!
 //! The pipeline: [`scene::Scene::load`] -> [`mesh::gmsh::read_msh`] ->
 //! [`model::build`] (perturbation, node copies, element operators, springs) ->
 //! [`solver::relax()`] (phase 1, then phase 2 for a scene with `[failure]`),
-//! driven by [`drivers::run_scene`] -> [`output::write_run`].
+//! driven by [`drivers::run_scene`] -> [`output::write_run`]. Beside the
+//! solver: [`fem`] (the implicit reference on the same mesh), [`lem`] (Bishop,
+//! Spencer), [`analysis`] (eq. 21 on a surface, kinematics, ensemble
+//! statistics); strength reduction and ensembles are drivers.
 //!
 //! ```no_run
 //! let scene = cdem::scene::Scene::load("verification/cases/column/column.toml".as_ref())?;

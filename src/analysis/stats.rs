@@ -46,12 +46,17 @@ pub struct Reliability {
     pub beta_lognormal: f64,
 }
 
-/// One row of the convergence table: statistics of the first `n` members.
+/// One row of the convergence table: statistics of the first `n` members,
+/// each with its 95 % interval (the same as the full ensemble's).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct ConvergencePoint {
     pub n: usize,
     pub mean: f64,
+    /// `mu +- z sigma / sqrt(n)` of the first `n` ([`Distribution::mean_ci95`]).
+    pub mean_ci95: [f64; 2],
     pub probability_of_failure: f64,
+    /// The Wilson score interval of `PF` of the first `n` ([`wilson95`]).
+    pub pf_ci95: [f64; 2],
 }
 
 /// Statistics of finite samples; `None` for an empty set.
@@ -117,20 +122,24 @@ pub fn reliability(fs: &[f64]) -> Option<Reliability> {
     })
 }
 
-/// Mean and PF of the first `n` members, at 10, 20, 50, 100, ... and at the end.
+/// Mean and PF of the first `n` members, with their 95 % intervals, at 10,
+/// 20, 50, 100, ... and at the end.
 pub fn convergence(fs: &[f64]) -> Vec<ConvergencePoint> {
     let mut ns: Vec<usize> =
         (1..).flat_map(|e: u32| [1, 2, 5].map(|m| m * 10usize.pow(e))).take_while(|&n| n < fs.len()).collect();
     ns.push(fs.len());
     ns.into_iter()
         .filter(|&n| n > 0)
-        .map(|n| {
-            let head = &fs[..n];
-            ConvergencePoint {
+        .filter_map(|n| {
+            let head = distribution(&fs[..n])?;
+            let failed = fs[..n].iter().filter(|&&f| f < 1.0).count();
+            Some(ConvergencePoint {
                 n,
-                mean: head.iter().sum::<f64>() / n as f64,
-                probability_of_failure: head.iter().filter(|&&f| f < 1.0).count() as f64 / n as f64,
-            }
+                mean: head.mean,
+                mean_ci95: head.mean_ci95,
+                probability_of_failure: failed as f64 / n as f64,
+                pf_ci95: wilson95(failed, n),
+            })
         })
         .collect()
 }

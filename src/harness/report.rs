@@ -38,11 +38,17 @@
 //!
 //! `cdem reproduce` and `cdem perf` assemble the same table from their own
 //! runs ([`Table::assemble`]); [`header`] gives the commit, date, command and
-//! thread count a report starts with.
+//! thread count a report starts with; [`html`] makes the report a web page
+//! (`report.html`), with [`citations`] (the sections of `references/` the
+//! rows cite), [`figures`] (what each figure supports) and [`markdown`].
 
+pub mod citations;
+pub mod figures;
 pub mod freshness;
 pub mod header;
+pub mod html;
 pub mod inputs;
+pub mod markdown;
 
 pub use freshness::{
     current_invocation, record, record_into, record_with, rows_dir, take_recorded, take_recorded_with, Freshness,

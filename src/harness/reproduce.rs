@@ -1,6 +1,8 @@
 //! `cdem reproduce --out DIR`: every paper case from the committed meshes (or
 //! regenerated with gmsh first, `--regenerate`), run, checked and drawn:
-//! `DIR/report.md` with the validation table and the figures (PNG, plotters).
+//! `DIR/report.md` with the validation table and the figures (PNG, plotters),
+//! and the same as one self-contained web page, `DIR/report.html`
+//! ([`crate::harness::report::html`]).
 //!
 //! [`reproduce`] is the list of steps; each step, and each paper figure, is a
 //! function of its own below. The cases and their reference values come from
@@ -18,6 +20,7 @@ use crate::error::Error;
 use crate::fem::FemSolution;
 use crate::harness::registry::{self as reg, Case};
 use crate::harness::report::header::RunHeader;
+use crate::harness::report::html::{self, Page};
 use crate::harness::report::{Check, Rules, Skips, Table};
 use crate::harness::{suite, validation};
 use crate::model::Model;
@@ -32,7 +35,7 @@ use crate::output::figures::{
 };
 use plotters::style::RGBColor;
 
-/// Runs everything into `out` and writes `out/report.md`; also the heavy
+/// Runs everything into `out` and writes `out/report.md` and `out/report.html`; also the heavy
 /// published slopes of issue 24 item 4 whose keys `published_slopes` names
 /// (on three element shapes, about an hour for all five on 2 cores; the
 /// others' rows are skipped). An unknown key is an error before any run.
@@ -106,12 +109,11 @@ impl Report {
         let rules = Rules { stale: &stale, absent: &absent, skips: Skips::Registry { ci: false, also: &[] } };
         let table = Table::assemble_with(&reg::rows(), std::mem::take(&mut self.checks), &rules);
         let failures = table.failures();
+        let header = RunHeader::of_this_process(Path::new("."));
+        let summary = format!("{}; {} failing; {:.0} s in all.", table.counts(), failures.len(), seconds);
         let head = format!(
-            "# cdem reproduce\n\n{}\n{}; {} failing; {:.0} s in all.\n\n## Validation\n\n{}{}\n",
-            RunHeader::of_this_process(Path::new(".")).markdown(),
-            table.counts(),
-            failures.len(),
-            seconds,
+            "# cdem reproduce\n\n{}\n{summary}\n\n## Validation\n\n{}{}\n",
+            header.markdown(),
             table.markdown(),
             if failures.is_empty() {
                 String::new()
@@ -121,6 +123,19 @@ impl Report {
         );
         let path = self.out.join("report.md");
         crate::output::write_atomic(&path, format!("{head}{}", self.md).as_bytes())?;
+        progress(&format!("wrote {}", path.display()));
+        let page = Page {
+            title: "cdem reproduce",
+            header: &header,
+            table: &table,
+            summary,
+            failures: &failures,
+            sections: &self.md,
+            dir: &self.out,
+            root: Path::new("."),
+        };
+        let path = self.out.join("report.html");
+        crate::output::write_atomic(&path, html::page(&page).as_bytes())?;
         progress(&format!("wrote {}", path.display()));
         Ok(())
     }

@@ -72,9 +72,19 @@ pub fn markdown(s: &EnsembleSummary) -> String {
         );
         let _ = writeln!(m, "| reliability index, normal | {} |", g(r.beta_normal));
         let _ = writeln!(m, "| reliability index, lognormal | {} |", g(r.beta_lognormal));
-        let _ = writeln!(m, "\n| members | mean FS | PF |\n|---|---|---|");
+        let _ = writeln!(m, "\n| members | mean FS | 95 % CI | PF | 95 % CI |\n|---|---|---|---|---|");
         for c in &s.convergence {
-            let _ = writeln!(m, "| {} | {} | {} |", c.n, g(c.mean), g(c.probability_of_failure));
+            let _ = writeln!(
+                m,
+                "| {} | {} | {} to {} | {} | {} to {} |",
+                c.n,
+                g(c.mean),
+                g(c.mean_ci95[0]),
+                g(c.mean_ci95[1]),
+                g(c.probability_of_failure),
+                g(c.pf_ci95[0]),
+                g(c.pf_ci95[1])
+            );
         }
     }
     if !s.draws.is_empty() {

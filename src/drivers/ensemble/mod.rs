@@ -519,12 +519,25 @@ pub fn run_members(
     Ok(out)
 }
 
+/// One bin of [`pf_by`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PfBin {
+    /// The bin's centre (the drawn variable's unit).
+    pub centre: f64,
+    /// P(FS < 1) of its members.
+    pub pf: f64,
+    pub members: usize,
+    /// The 95 % Wilson interval of `pf` (the one `ensemble.md` prints for
+    /// the whole ensemble, [`crate::analysis::stats::wilson95`]).
+    pub ci95: [f64; 2],
+}
+
 /// P(FS < 1) against a drawn variable: the members (those with an FS) in
-/// `bins` equal bins of the value drawn for `key`, as `(bin centre, P(FS < 1),
-/// members)`; empty if no member drew `key`. For the water level of an
-/// ensemble (`water.rise`), the probability of failure against the level
-/// from one ensemble.
-pub fn pf_by(records: &[MemberRecord], key: &str, bins: usize) -> Vec<(f64, f64, usize)> {
+/// `bins` equal bins of the value drawn for `key`, each bin with its
+/// members and its 95 % interval; empty if no member drew `key`. For the
+/// water level of an ensemble (`water.rise`), the probability of failure
+/// against the level from one ensemble.
+pub fn pf_by(records: &[MemberRecord], key: &str, bins: usize) -> Vec<PfBin> {
     let pairs: Vec<(f64, f64)> =
         records.iter().filter_map(|r| Some((r.draws.iter().find(|d| d.key == key)?.value, r.fs?))).collect();
     let (lo, hi) = pairs.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.0), b.max(p.0)));
@@ -542,7 +555,12 @@ pub fn pf_by(records: &[MemberRecord], key: &str, bins: usize) -> Vec<(f64, f64,
         .iter()
         .enumerate()
         .filter(|(_, c)| c.0 > 0)
-        .map(|(k, &(n, failed))| (lo + (k as f64 + 0.5) * width, failed as f64 / n as f64, n))
+        .map(|(k, &(n, failed))| PfBin {
+            centre: lo + (k as f64 + 0.5) * width,
+            pf: failed as f64 / n as f64,
+            members: n,
+            ci95: crate::analysis::stats::wilson95(failed, n),
+        })
         .collect()
 }
 

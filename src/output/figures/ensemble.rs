@@ -1,13 +1,27 @@
 //! The figures of an ensemble: `fs-histogram.png` (the members' FS with
-//! FS = 1 and the mean marked) and `convergence.png` (the mean FS and PF of
-//! the first n members against n).
+//! FS = 1 and the mean marked), `convergence.png` (the mean FS and PF of
+//! the first n members against n) and `pf-by-water.png` (PF in bins of the
+//! water level); every estimate drawn with its 95 % interval, the one
+//! `ensemble.md` prints, so that a bin of 6 members is not read as a
+//! measurement.
 
 use std::path::Path;
 
 use plotters::prelude::*;
 
 use super::plot::{init_fonts, plot_err};
-use crate::drivers::ensemble::EnsembleSummary;
+use crate::drivers::ensemble::{EnsembleSummary, PfBin};
+
+/// A vertical 95 % interval `[lo, hi]` at `x`, its caps from `caps.0` to
+/// `caps.1` (x units).
+fn interval(x: f64, [lo, hi]: [f64; 2], caps: (f64, f64)) -> [PathElement<(f64, f64)>; 3] {
+    let style = RGBColor(31, 119, 180).mix(0.7).stroke_width(2);
+    [
+        PathElement::new(vec![(x, lo), (x, hi)], style),
+        PathElement::new(vec![(caps.0, lo), (caps.1, lo)], style),
+        PathElement::new(vec![(caps.0, hi), (caps.1, hi)], style),
+    ]
+}
 
 /// Histogram of the members' FS, FS = 1 and the mean marked.
 pub fn histogram(path: &Path, fs: &[f64], s: &EnsembleSummary) -> crate::Result<()> {
@@ -85,7 +99,8 @@ pub fn histogram(path: &Path, fs: &[f64], s: &EnsembleSummary) -> crate::Result<
     root.present().map_err(|e| plot_err(path, e))
 }
 
-/// Mean FS and PF of the first n members against n (log n).
+/// Mean FS and PF of the first n members against n (log n), each point with
+/// its 95 % interval.
 pub fn convergence(path: &Path, s: &EnsembleSummary) -> crate::Result<()> {
     init_fonts();
     let pts = &s.convergence;
@@ -97,22 +112,29 @@ pub fn convergence(path: &Path, s: &EnsembleSummary) -> crate::Result<()> {
     let panels = root.split_evenly((2, 1));
     let n1 = pts.last().map_or(10.0, |p| p.n as f64).max(10.0);
     let n0 = pts.first().map_or(1.0, |p| p.n as f64).min(n1 / 2.0);
-    // (title, points, the full ensemble's value)
-    type Panel<'a> = (&'a str, Vec<(f64, f64)>, Option<f64>);
+    // (title, points, their 95 % intervals, the full ensemble's value)
+    type Panel<'a> = (&'a str, Vec<(f64, f64)>, Vec<[f64; 2]>, Option<f64>);
     let series: [Panel; 2] = [
         (
-            "mean FS of the first n members",
+            "mean FS of the first n members, 95 % interval",
             pts.iter().map(|p| (p.n as f64, p.mean)).collect(),
+            pts.iter().map(|p| p.mean_ci95).collect(),
             s.fs.as_ref().map(|d| d.mean),
         ),
         (
-            "P(FS < 1) of the first n members",
+            "P(FS < 1) of the first n members, 95 % Wilson interval",
             pts.iter().map(|p| (p.n as f64, p.probability_of_failure)).collect(),
+            pts.iter().map(|p| p.pf_ci95).collect(),
             s.reliability.as_ref().map(|r| r.probability_of_failure),
         ),
     ];
-    for (area, (title, line, last)) in panels.iter().zip(series) {
-        let (lo, hi) = line.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.1), b.max(p.1)));
+    for (area, (title, line, ci, last)) in panels.iter().zip(series) {
+        let (lo, hi) = ci
+            .iter()
+            .flatten()
+            .chain(line.iter().map(|p| &p.1))
+            .filter(|v| v.is_finite())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
         let pad = ((hi - lo) * 0.1).max(1e-3 * hi.abs().max(1e-3));
         let mut chart = ChartBuilder::on(area)
             .caption(title, ("sans-serif", 19))
@@ -130,6 +152,10 @@ pub fn convergence(path: &Path, s: &EnsembleSummary) -> crate::Result<()> {
             .draw()
             .map_err(|e| plot_err(path, e))?;
         let c = RGBColor(31, 119, 180);
+        // Caps a fixed fraction of a decade wide on the log axis.
+        for (p, b) in line.iter().zip(&ci) {
+            chart.draw_series(interval(p.0, *b, (p.0 / 1.06, p.0 * 1.06))).map_err(|e| plot_err(path, e))?;
+        }
         chart.draw_series(LineSeries::new(line.clone(), c.stroke_width(2))).map_err(|e| plot_err(path, e))?;
         chart.draw_series(line.iter().map(|&p| Circle::new(p, 4, c.filled()))).map_err(|e| plot_err(path, e))?;
         if let Some(v) = last {
@@ -161,18 +187,22 @@ pub fn write_figures(
     Ok(())
 }
 
-/// P(FS < 1) in bins of one drawn variable (`(centre, P, members)` per bin).
-pub fn pf_by_variable(path: &Path, key: &str, bins: &[(f64, f64, usize)]) -> crate::Result<()> {
+/// P(FS < 1) in bins of one drawn variable, each with its members and its
+/// 95 % Wilson interval.
+pub fn pf_by_variable(path: &Path, key: &str, bins: &[PfBin]) -> crate::Result<()> {
     init_fonts();
     if bins.is_empty() {
         return Ok(());
     }
     let root = BitMapBackend::new(path, (900, 560)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| plot_err(path, e))?;
-    let (x0, x1) = (bins[0].0, bins[bins.len() - 1].0);
+    let (x0, x1) = (bins[0].centre, bins[bins.len() - 1].centre);
     let pad = ((x1 - x0) * 0.08).max(1e-6);
     let mut chart = ChartBuilder::on(&root)
-        .caption(format!("P(FS < 1) against {key} (members per bin beside each point)"), ("sans-serif", 19))
+        .caption(
+            format!("P(FS < 1) against {key}: 95 % Wilson interval, members per bin beside each point"),
+            ("sans-serif", 19),
+        )
         .margin(14)
         .x_label_area_size(44)
         .y_label_area_size(60)
@@ -188,14 +218,20 @@ pub fn pf_by_variable(path: &Path, key: &str, bins: &[(f64, f64, usize)]) -> cra
         .draw()
         .map_err(|e| plot_err(path, e))?;
     let c = RGBColor(31, 119, 180);
-    let line: Vec<(f64, f64)> = bins.iter().map(|b| (b.0, b.1)).collect();
+    let cap = 0.012 * (x1 - x0 + 2.0 * pad);
+    for b in bins {
+        chart
+            .draw_series(interval(b.centre, b.ci95, (b.centre - cap, b.centre + cap)))
+            .map_err(|e| plot_err(path, e))?;
+    }
+    let line: Vec<(f64, f64)> = bins.iter().map(|b| (b.centre, b.pf)).collect();
     chart.draw_series(LineSeries::new(line.clone(), c.stroke_width(2))).map_err(|e| plot_err(path, e))?;
     chart.draw_series(line.iter().map(|&p| Circle::new(p, 5, c.filled()))).map_err(|e| plot_err(path, e))?;
+    // The member count beside the point, right of its interval.
     chart
-        .draw_series(
-            bins.iter()
-                .map(|b| Text::new(format!("{}", b.2), (b.0, (b.1 + 0.04).min(1.02)), ("sans-serif", 13).into_font())),
-        )
+        .draw_series(bins.iter().map(|b| {
+            Text::new(format!("n {}", b.members), (b.centre + 1.5 * cap, b.pf + 0.01), ("sans-serif", 13).into_font())
+        }))
         .map_err(|e| plot_err(path, e))?;
     root.present().map_err(|e| plot_err(path, e))
 }
