@@ -18,6 +18,7 @@ pub mod failure;
 pub mod fem;
 pub mod input;
 pub mod lem;
+pub mod mesh_check;
 pub mod phase;
 pub mod run;
 pub mod runout;
