@@ -13,6 +13,7 @@
 //! - [`analysis`]: the scene's `[analysis]`, eq. 21/22 on its slip circle.
 
 pub mod analysis;
+pub mod discretisation;
 pub mod ensemble;
 pub mod failure;
 pub mod fem;

@@ -181,7 +181,7 @@ pub struct SrmResult {
     /// The discretisation error (`cdem srm --mesh-check`,
     /// [`super::mesh_check`]).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub discretisation: Option<super::mesh_check::Discretisation>,
+    pub discretisation: Option<super::discretisation::Discretisation>,
 }
 
 /// The warning of a slip band that crosses fewer than
