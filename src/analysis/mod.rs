@@ -7,8 +7,10 @@
 pub mod arc;
 pub mod compare;
 pub mod kinematics;
+pub mod richardson;
 pub mod safety;
 pub mod slip;
+pub mod slip_band;
 pub mod stats;
 
 pub use safety::{

@@ -52,6 +52,25 @@ pub fn srm(scene_path: &Path, out: &Path, progress: &mut dyn FnMut(SrmProgress))
     Ok(result)
 }
 
+/// `cdem srm SCENE --mesh-check [R,...] --out DIR`: the reduction on the
+/// scene's mesh and on meshes refined by each factor `R` (written into
+/// `DIR/mesh-check/`), and the discretisation error of the factor
+/// ([`crate::drivers::mesh_check`]); the files of [`srm`], `srm.json` with
+/// its section `discretisation`.
+pub fn srm_mesh_check(
+    scene_path: &Path,
+    refine: &[f64],
+    out: &Path,
+    progress: &mut dyn FnMut(crate::drivers::mesh_check::CheckProgress),
+) -> crate::Result<SrmResult> {
+    let scene = Scene::load(scene_path)?;
+    let (result, model) = crate::drivers::mesh_check::mesh_check(&scene, refine, &out.join("mesh-check"), progress)?;
+    crate::output::write_srm(&result, &model, out)?;
+    figures::mechanism::mechanism_png(&result, &model, &out.join("mechanism.png"))?;
+    figures::mechanism::slip_band_png(&result, &model, &out.join("slip-band.png"))?;
+    Ok(result)
+}
+
 /// `cdem fem SCENE --out DIR`: the implicit FEM reference on the continuous
 /// mesh; writes its files and, with `[analysis]`, `analysis.png`.
 pub fn fem(scene_path: &Path, out: &Path) -> crate::Result<FemRun> {
@@ -62,6 +81,25 @@ pub fn fem(scene_path: &Path, out: &Path) -> crate::Result<FemRun> {
         figures::analysis::fem_png(&fem, &out.join("analysis.png"))?;
     }
     Ok(fem)
+}
+
+/// `cdem fem SCENE --mesh-check [R,...] --out DIR`: [`fem`]'s files for the
+/// scene's mesh, and `DIR/mesh-check.json`: its headline values on the
+/// meshes refined by each `R` (in `DIR/mesh-check/`) and their
+/// extrapolation ([`crate::drivers::mesh_check::fem_mesh_check`]).
+pub fn fem_mesh_check(
+    scene_path: &Path,
+    refine: &[f64],
+    out: &Path,
+) -> crate::Result<(FemRun, crate::drivers::mesh_check::ElasticCheck)> {
+    let scene = Scene::load(scene_path)?;
+    let (fem, check) = crate::drivers::mesh_check::fem_mesh_check(&scene, refine, &out.join("mesh-check"))?;
+    crate::output::write_fem(&fem.solution, fem.surface.as_ref(), out)?;
+    if fem.surface.is_some() {
+        figures::analysis::fem_png(&fem, &out.join("analysis.png"))?;
+    }
+    crate::output::write_json(&out.join("mesh-check.json"), &check)?;
+    Ok((fem, check))
 }
 
 /// `cdem lem INPUT [--out FILE]`: the LEM of a LEM file or of a scene's

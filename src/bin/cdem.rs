@@ -45,6 +45,13 @@ enum Command {
         scene: PathBuf,
         #[arg(long, default_value = "out-srm")]
         out: PathBuf,
+        /// Also estimate the factor's discretisation error: the reduction again on meshes refined by
+        /// each factor (default 2; `--mesh-check 1.5,2` for three meshes), every reduction bisected to
+        /// 0.0025; gmsh on the .geo beside the mesh when it takes `refine`, else every element split
+        /// into eight (factors 2 or 4). Prints "FS on this mesh; about .. converged; this mesh errs ..
+        /// (unsafe side)" and writes srm.json's `discretisation` and DIR/mesh-check/.
+        #[arg(long, value_delimiter = ',', num_args = 0.., default_missing_value = "2", value_name = "R")]
+        mesh_check: Option<Vec<f64>>,
     },
     /// Regenerate a case's .msh from its .geo with gmsh (gmsh must be on PATH); or, given a
     /// geometry file (.toml: a slope and its [[joint_set]]s), write DIR/NAME.geo, .msh and a
@@ -68,6 +75,12 @@ enum Command {
         scene: PathBuf,
         #[arg(long, default_value = "out-fem")]
         out: PathBuf,
+        /// Also solve on meshes refined by each factor (default 2; `--mesh-check 2,4` for three) and
+        /// extrapolate min u_z and min sigma_zz (Richardson; second order assumed without three meshes):
+        /// DIR/mesh-check.json and DIR/mesh-check/ (gmsh on the .geo beside the mesh when it takes
+        /// `refine`, else every element split into eight).
+        #[arg(long, value_delimiter = ',', num_args = 0.., default_missing_value = "2", value_name = "R")]
+        mesh_check: Option<Vec<f64>>,
     },
     /// Limit-equilibrium slope stability (2D circular search): print a table, write JSON.
     #[command(long_about = LEM_HELP)]
@@ -306,8 +319,8 @@ fn command(cli: Cli) -> ExitCode {
     let reached = |r: cdem::Result<()>| r.map(|()| Outcome::Reached);
     let result = match cli.command {
         Command::Run { scene, out } => run(&scene, &out),
-        Command::Fem { scene, out } => fem(&scene, &out),
-        Command::Srm { scene, out } => srm(&scene, &out),
+        Command::Fem { scene, out, mesh_check } => fem(&scene, &out, mesh_check.as_deref()),
+        Command::Srm { scene, out, mesh_check } => srm(&scene, &out, mesh_check.as_deref()),
         Command::Mesh { geo, out } if geo.extension().is_some_and(|e| e == "toml") => {
             let dir = out.unwrap_or_else(|| geo.parent().map(PathBuf::from).unwrap_or_default());
             reached(cdem::scene::joint_sets::mesh_geometry(&geo, &dir).map(|m| {
@@ -513,11 +526,13 @@ fn ensemble(args: EnsembleArgs) -> cdem::Result<()> {
     Ok(())
 }
 
-/// `cdem srm`: strength reduction; progress per trial on the terminal.
-fn srm(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
+/// `cdem srm`: strength reduction (with `mesh_check`, on the refined meshes
+/// too); progress per trial on the terminal.
+fn srm(scene_path: &Path, out: &Path, mesh_check: Option<&[f64]>) -> cdem::Result<Outcome> {
+    use cdem::drivers::mesh_check::CheckProgress;
     use cdem::drivers::SrmProgress;
     let pb = progress_bar(0);
-    let result = cdem::app::srm(scene_path, out, &mut |p| match p {
+    let mut on_srm = |p: SrmProgress| match p {
         SrmProgress::Elastic(steps) => pb.suspend(|| eprintln!("elastic phase: {steps} steps")),
         SrmProgress::TrialStart(f) => pb.set_message(format!("trial F = {f:.4}")),
         SrmProgress::Step(step, ratio) => {
@@ -539,7 +554,18 @@ fn srm(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
                 t.yielded_tension_volume
             )
         }),
-    })?;
+    };
+    let result = match mesh_check {
+        None => cdem::app::srm(scene_path, out, &mut on_srm)?,
+        Some(refine) => {
+            let refine = if refine.is_empty() { &cdem::drivers::mesh_check::DEFAULT_REFINE[..] } else { refine };
+            cdem::app::srm_mesh_check(scene_path, refine, out, &mut |p| match p {
+                CheckProgress::Meshing(r) => pb.suspend(|| eprintln!("mesh check: meshing at refine {r}")),
+                CheckProgress::Mesh(r) => pb.suspend(|| eprintln!("mesh check: strength reduction at refine {r}")),
+                CheckProgress::Srm(p) => on_srm(p),
+            })?
+        }
+    };
     pb.finish_and_clear();
     if let Some(note) = &result.model.note {
         println!("note: {note}");
@@ -577,12 +603,43 @@ fn srm(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
             }
         );
     }
+    match (&result.discretisation, &result.slip_band) {
+        (Some(d), _) => {
+            for m in &d.meshes {
+                println!(
+                    "  refine {}: {} elements, FS {} [{}, {}], {} trials, {:.1} s",
+                    m.refine,
+                    m.elements,
+                    m.fs.map_or("-".to_string(), |f| format!("{f:.4}")),
+                    show(m.bracket[0]),
+                    show(m.bracket[1]),
+                    m.trials,
+                    m.wall_s
+                );
+            }
+            println!("{} (the check took {:.1} times the reduction on this mesh)", d.line, d.cost_ratio);
+        }
+        (None, Some(band)) => {
+            println!("slip band: crosses {} elements, {:.1} thick", band.along, band.across);
+            if let Some(w) = &result.band_warning {
+                println!("warning: {w}");
+            }
+        }
+        (None, None) => {}
+    }
     Ok(if result.fs.is_some() { Outcome::Reached } else { Outcome::OutOfSteps })
 }
 
 /// `cdem fem`: the implicit FEM reference on the continuous mesh.
-fn fem(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
-    let fem = cdem::app::fem(scene_path, out)?;
+fn fem(scene_path: &Path, out: &Path, mesh_check: Option<&[f64]>) -> cdem::Result<Outcome> {
+    let (fem, check) = match mesh_check {
+        None => (cdem::app::fem(scene_path, out)?, None),
+        Some(refine) => {
+            let refine = if refine.is_empty() { &cdem::drivers::mesh_check::DEFAULT_REFINE[..] } else { refine };
+            let (fem, check) = cdem::app::fem_mesh_check(scene_path, refine, out)?;
+            (fem, Some(check))
+        }
+    };
     let sol = &fem.solution;
     let s = &sol.summary;
     println!(
@@ -596,6 +653,14 @@ fn fem(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
     );
     if let Some(report) = &fem.surface {
         print_surface(report);
+    }
+    if let Some(c) = &check {
+        for m in &c.meshes {
+            println!("  refine {}: {} elements, min u_z {:.4e} m ({:.2} s)", m.refine, m.elements, m.min_uz, m.wall_s);
+        }
+        for line in &c.lines {
+            println!("{line}");
+        }
     }
     Ok(if s.converged { Outcome::Reached } else { Outcome::OutOfSteps })
 }

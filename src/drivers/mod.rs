@@ -13,11 +13,13 @@
 //! - [`analysis`]: the scene's `[analysis]`, eq. 21/22 on its slip circle.
 
 pub mod analysis;
+pub mod discretisation;
 pub mod ensemble;
 pub mod failure;
 pub mod fem;
 pub mod input;
 pub mod lem;
+pub mod mesh_check;
 pub mod phase;
 pub mod run;
 pub mod runout;

@@ -23,7 +23,11 @@
 //! [`BRACKET_RATIO`] until the outcome changes; then bisect the bracket
 //! `[lo, hi]` (`lo` stable, `hi` unstable) to a width of at most
 //! [`BRACKET_WIDTH`]. `fs` is the bracket's midpoint. The mechanism is the
-//! displacement since the elastic state of the trial at the final `hi`.
+//! displacement since the elastic state of the trial at the final `hi`;
+//! with plastic blocks its slip band says how many elements it crosses, and
+//! fewer than [`MIN_ELEMENTS_ALONG`] give the result a warning
+//! ([`crate::analysis::slip_band`]; `cdem srm --mesh-check`,
+//! [`super::mesh_check`], estimates the error).
 
 use std::ops::ControlFlow;
 
@@ -32,6 +36,7 @@ use serde::Serialize;
 use super::failure::{self, phase_plan};
 use super::phase::{failed_springs, NoWatch, Phase, Watch};
 use super::run::run_watched;
+use crate::analysis::slip_band::{slip_band, SlipBand, MIN_ELEMENTS_ALONG};
 use crate::error::{Error, SceneError};
 use crate::model::Model;
 use crate::physics::joint::JointState;
@@ -165,6 +170,31 @@ pub struct SrmResult {
     /// The plastic blocks at the final `hi` (the slip band), per element.
     #[serde(skip)]
     pub mechanism_cells: Option<Vec<CellPlastic>>,
+    /// The slip band at the final `hi` with plastic blocks: how many
+    /// elements it crosses ([`crate::analysis::slip_band`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub slip_band: Option<SlipBand>,
+    /// The warning of a band that crosses fewer than
+    /// [`crate::analysis::slip_band::MIN_ELEMENTS_ALONG`] elements.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub band_warning: Option<String>,
+    /// The discretisation error (`cdem srm --mesh-check`,
+    /// [`super::mesh_check`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub discretisation: Option<super::discretisation::Discretisation>,
+}
+
+/// The warning of a slip band that crosses fewer than
+/// [`MIN_ELEMENTS_ALONG`] elements (None: enough).
+pub fn band_warning(band: &SlipBand) -> Option<String> {
+    (band.along < MIN_ELEMENTS_ALONG).then(|| {
+        format!(
+            "the slip band crosses {} elements (fewer than {MIN_ELEMENTS_ALONG}): the factor of safety is likely \
+             unconservative on this mesh (references/srm.md, \"Discretisation error\"); `cdem srm --mesh-check` \
+             estimates its error",
+            band.along
+        )
+    })
 }
 
 /// Which model a factor of safety comes from, and what it answers.
@@ -423,7 +453,19 @@ pub fn run_srm_with(
     foresight: Option<Foresight>,
     progress: &mut dyn FnMut(SrmProgress),
 ) -> Result<(SrmResult, Model), Error> {
-    search(scene, start, foresight, None, progress)
+    search(scene, start, foresight, None, BRACKET_WIDTH, progress)
+}
+
+/// [`run_srm_with`] bisected to a bracket of at most `width` (the mesh
+/// check's, [`super::mesh_check::CHECK_BRACKET_WIDTH`]).
+pub fn search_to(
+    scene: &Scene,
+    start: TrialStart,
+    foresight: Option<Foresight>,
+    width: f64,
+    progress: &mut dyn FnMut(SrmProgress),
+) -> Result<(SrmResult, Model), Error> {
+    search(scene, start, foresight, None, width, progress)
 }
 
 /// [`run_srm`] after a run of the same scene, whose phase 2 is taken over
@@ -434,7 +476,7 @@ pub fn run_srm_after(
     run: Phase2Run,
     progress: &mut dyn FnMut(SrmProgress),
 ) -> Result<(SrmResult, Model), Error> {
-    search(scene, TrialStart::Warm, Some(Foresight::TRIALS), Some(run), progress)
+    search(scene, TrialStart::Warm, Some(Foresight::TRIALS), Some(run), BRACKET_WIDTH, progress)
 }
 
 /// The search of the module documentation; `given` may stand in for the
@@ -444,6 +486,7 @@ fn search(
     start: TrialStart,
     foresight: Option<Foresight>,
     mut given: Option<Phase2Run>,
+    width: f64,
     progress: &mut dyn FnMut(SrmProgress),
 ) -> Result<(SrmResult, Model), Error> {
     let t0 = std::time::Instant::now();
@@ -492,7 +535,7 @@ fn search(
     }
     // Bisection.
     while let (Some(l), Some(h)) = (lo, hi) {
-        if h - l <= BRACKET_WIDTH {
+        if h - l <= width {
             break;
         }
         let mid = 0.5 * (l + h);
@@ -505,6 +548,7 @@ fn search(
         }
     }
     let (mechanism, mechanism_cells) = mechanism.map_or((None, None), |(u, c)| (Some(u), c));
+    let band = mechanism_cells.as_deref().and_then(|c| slip_band(&red.model, c));
     let fs = lo.zip(hi).map(|(l, h)| 0.5 * (l + h));
     let hi_outcome = hi.and_then(|h| trials.iter().find(|t| t.factor == h)).map(|t| t.outcome);
     let sliding = trials.iter().filter(|t| t.outcome == EndState::GlobalSliding);
@@ -526,6 +570,9 @@ fn search(
         water: red.model.water.as_ref().map(|w| w.summary()),
         mechanism,
         mechanism_cells,
+        band_warning: band.as_ref().and_then(band_warning),
+        slip_band: band,
+        discretisation: None,
     };
     Ok((result, red.model))
 }

@@ -24,7 +24,9 @@
 //!   use; perf's LEM cases and paper slope are [`LEM_PAPER_SLOPE_EXPLICIT`],
 //!   [`LEM_ACADS_1A`] and [`SLOPE`].
 
+mod fserror;
 mod runout;
+pub use fserror::*;
 pub use runout::*;
 use std::path::Path;
 
@@ -1170,6 +1172,7 @@ pub fn rows() -> Vec<RowSpec> {
     all.extend(extreme_cases().iter().flat_map(|c| EXTREME_SOLVERS.map(|s| c.row_spec_for(s))));
     all.extend_from_slice(&ROWS[6..]);
     all.extend_from_slice(RUNOUT_ROWS);
+    all.extend_from_slice(FSERROR_ROWS);
     all
 }
 

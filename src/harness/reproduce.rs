@@ -147,6 +147,7 @@ impl Report {
 fn not_in_reproduce() -> Vec<Check> {
     let mut rows = crate::harness::perf::rows::srm_perf_skipped(SRM_PERF_ONLY);
     rows.extend(crate::harness::perf::rows::ensemble_perf_skipped(ENSEMBLE_PERF_ONLY));
+    rows.extend(reg::FSERROR_ROWS.iter().map(|r| r.skipped(reg::FSERROR_SKIP)));
     rows
 }
 const SRM_PERF_ONLY: &str =

@@ -9,6 +9,7 @@ pub mod adjacency;
 pub mod gmsh;
 pub mod locate;
 pub mod perturb;
+pub mod refine;
 pub mod shape;
 
 // pub use adjacency::{FaceAdjacency, SharedFace};

@@ -44,6 +44,7 @@ pub const DECLARED: &[(&str, &[&str])] = &[
     ("plastic/gl1-tet-srm", &["verification/plastic/griffiths-lane-1/gl1-tet.toml"]),
     ("plastic/paper-slope-srm", &["verification/plastic/paper-slope/paper-slope.toml", "verification/cases/slope/slope.msh"]),
     ("plastic/gl1-mesh-spread", &["verification/plastic/griffiths-lane-1/gl1-hex.toml", "verification/plastic/griffiths-lane-1/gl1-prism.toml", "verification/plastic/griffiths-lane-1/gl1-tet.toml"]),
+    ("fserror/gl1/", &["verification/plastic/griffiths-lane-1/gl1-hex.toml", "verification/plastic/griffiths-lane-1/gl1-hex.msh", "verification/plastic/griffiths-lane-1/gl1-hex.geo", "verification/plastic/griffiths-lane-1/section.geo", "verification/plastic/slab.geo"]),
     ("plastic/slopes/at/", &["verification/plastic/arai-tagyo/at-hex.toml", "verification/plastic/arai-tagyo/at-prism.toml", "verification/plastic/arai-tagyo/at-tet.toml", "verification/plastic/arai-tagyo/at-lem.toml"]),
     ("plastic/slopes/yu/", &["verification/plastic/yamagami-ueta/yu-hex.toml", "verification/plastic/yamagami-ueta/yu-prism.toml", "verification/plastic/yamagami-ueta/yu-tet.toml", "verification/plastic/yamagami-ueta/yu-lem.toml"]),
     ("plastic/slopes/c63/", &["verification/plastic/cheng-63/c63-hex-fine.toml", "verification/plastic/cheng-63/c63-prism.toml", "verification/plastic/cheng-63/c63-tet.toml", "verification/plastic/cheng-63/c63-lem.toml"]),

@@ -8,6 +8,7 @@
 pub mod block;
 pub mod ensemble;
 pub mod extreme;
+pub mod fserror;
 pub mod joints;
 pub mod lem_water;
 pub mod meshes;
