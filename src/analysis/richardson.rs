@@ -113,7 +113,9 @@ pub fn observed_order(h: &[f64], f: &[f64], resolution: f64) -> Option<f64> {
     // g(p) = (h1^p - h2^p) / (h2^p - h3^p) grows with p for h1 > h2 > h3.
     let g = |p: f64| (h[0].powf(p) - h[1].powf(p)) / (h[1].powf(p) - h[2].powf(p)) - target;
     let [mut lo, mut hi] = ORDER_RANGE;
-    if g(lo) > 0.0 || g(hi) < 0.0 {
+    // A rounding band at the ends: an order of exactly 2 is in range.
+    let band = 1e-12 * target.abs();
+    if g(lo) > band || g(hi) < -band {
         return None;
     }
     for _ in 0..100 {
