@@ -17,6 +17,20 @@ pub fn element_row_sums(model: &Model) -> Vec<f64> {
     max_of_rows(&component_row_sums(model, false))
 }
 
+/// Absolute row sums of a spring's block `K_aa = K_n n n^T + K_s (I - n n^T)`
+/// (its `K_ab = -K_aa`, so a node's row over both is twice these).
+pub fn spring_block_rows(kn: f64, ks: f64, n: [f64; 3]) -> [f64; 3] {
+    [0, 1, 2].map(|i| {
+        (0..3)
+            .map(|j| {
+                let nn = n[i] * n[j];
+                let id = if i == j { 1.0 } else { 0.0 };
+                (kn * nn + ks * (id - nn)).abs()
+            })
+            .sum()
+    })
+}
+
 fn max_of_rows(rows: &[f64]) -> Vec<f64> {
     rows.chunks(3).map(|r| r[0].max(r[1]).max(r[2])).collect()
 }
@@ -38,16 +52,8 @@ fn component_row_sums(model: &Model, springs: bool) -> Vec<f64> {
     }
     let sp = &model.springs;
     for s in (0..sp.len()).filter(|_| springs) {
-        let n = sp.normal[s];
-        for i in 0..3 {
-            // Block K_aa = K_n n n^T + K_s (I - n n^T); K_ab = -K_aa.
-            let r: f64 = (0..3)
-                .map(|j| {
-                    let nn = n[i] * n[j];
-                    let id = if i == j { 1.0 } else { 0.0 };
-                    (sp.kn[s] * nn + sp.ks[s] * (id - nn)).abs()
-                })
-                .sum();
+        let block = spring_block_rows(sp.kn[s], sp.ks[s], sp.normal[s]);
+        for (i, &r) in block.iter().enumerate() {
             rows[3 * sp.a[s] as usize + i] += 2.0 * r;
             rows[3 * sp.b[s] as usize + i] += 2.0 * r;
         }

@@ -1079,16 +1079,7 @@ fn face_row_bound(model: &Model, faces: &Faces, node_elems: &[Vec<(u32, u8)>], k
     let sp = &model.springs;
     for s in 0..sp.len() {
         let n = sp.normal[s];
-        let row = (0..3)
-            .map(|i| {
-                (0..3)
-                    .map(|j| {
-                        let (nn, id) = (n[i] * n[j], if i == j { 1.0 } else { 0.0 });
-                        (sp.kn[s] * nn + sp.ks[s] * (id - nn)).abs()
-                    })
-                    .sum::<f64>()
-            })
-            .fold(0.0, f64::max);
+        let row = crate::solver::timestep::spring_block_rows(sp.kn[s], sp.ks[s], n).into_iter().fold(0.0, f64::max);
         for (node, sign) in [(sp.a[s] as usize, 1.0), (sp.b[s] as usize, -1.0)] {
             let dot = |f: usize| (0..3).map(|d| sign * n[d] * faces.face_normal[f][d]).sum::<f64>();
             match node_faces[node].iter_mut().max_by(|x, y| dot(x.0).total_cmp(&dot(y.0))) {
