@@ -20,6 +20,10 @@ pub enum Error {
     Io { path: PathBuf, source: std::io::Error },
     #[error("gmsh: {0}")]
     Gmsh(String),
+    /// The run finished and wrote its report, and rows of it fail (the
+    /// report lists them): a program whose checks fail exits non-zero.
+    #[error("{count} validation rows fail (listed in {report}), the first: {first}")]
+    Validation { count: usize, report: PathBuf, first: String },
 }
 
 impl Error {

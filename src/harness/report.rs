@@ -14,9 +14,7 @@
 //!   `FAIL`);
 //! - **skipped**: a check that cannot run here, with its reason; only a row
 //!   whose spec allows it ([`RowSpec::skip`]) may be skipped, and under
-//!   `CI=true` no asserted row may ([`Skips::Registry`]) but a heavy one
-//!   ([`RowSpec::heavy`]: an hour's computation that its own command
-//!   asserts).
+//!   `CI=true` no asserted row may ([`Skips::Registry`]).
 //!
 //! Completeness: every row the table must contain is listed once in the
 //! registry ([`crate::harness::registry::ROWS`], a [`RowSpec`] each). Tests
@@ -77,6 +75,12 @@ pub enum Kind {
     /// Asserted: allowed relative error (`|ours - reference| / |reference|`,
     /// or `|ours|` if the reference is 0).
     Asserted { tolerance: f64 },
+    /// Asserted with a direction: the signed relative error
+    /// (`(ours - reference) / reference`) at most `above` and at least
+    /// `-below`. For a factor of safety `above` is the unsafe side (ours too
+    /// high) and `below` the safe side; each bound is derived from the row's
+    /// measured error (references/, the row's source, says how).
+    Bounded { above: f64, below: f64 },
     /// Reported against a goal.
     Reported { goal: Goal },
     /// A qualitative result compared with a reference statement; `asserted`:
@@ -196,10 +200,14 @@ impl Check {
         }
     }
     pub fn rel_error(&self) -> f64 {
+        self.signed_error().abs()
+    }
+    /// `(ours - reference) / reference`, or `ours` if the reference is 0.
+    pub fn signed_error(&self) -> f64 {
         if self.reference == 0.0 {
-            self.ours.abs()
+            self.ours
         } else {
-            ((self.ours - self.reference) / self.reference).abs()
+            (self.ours - self.reference) / self.reference
         }
     }
     /// The row's own result (before the completeness check of [`Table`]).
@@ -208,6 +216,14 @@ impl Check {
             Kind::Asserted { tolerance } => {
                 // A NaN error or tolerance is not within anything.
                 if self.defect.is_none() && self.rel_error() <= *tolerance {
+                    Status::Ok
+                } else {
+                    Status::Fail
+                }
+            }
+            Kind::Bounded { above, below } => {
+                let e = self.signed_error(); // NaN is within nothing
+                if self.defect.is_none() && e <= *above && e >= -*below {
                     Status::Ok
                 } else {
                     Status::Fail
@@ -265,6 +281,8 @@ mod nan_as_null {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum SpecKind {
     Asserted(f64),
+    /// Asserted with a direction ([`Kind::Bounded`]): (above, below).
+    Bounded(f64, f64),
     Reported(Goal),
     /// Compared; `true`: asserted.
     Compared(bool),
@@ -290,16 +308,10 @@ pub struct RowSpec {
     /// tolerance or goal, source, case and quantity are compared.
     pub reference: Option<f64>,
     /// `Some(reason)`: the row may be skipped, and why (e.g. gmsh not on
-    /// PATH; a timed run only `cdem perf` makes). `None`: a skipped row
-    /// fails. Under `CI=true` an asserted row may never be skipped, unless
-    /// it is [`RowSpec::heavy`].
+    /// PATH; a timed run only `cdem perf` makes; a flag of `cdem reproduce`
+    /// that skips the slow ones). `None`: a skipped row fails. Under
+    /// `CI=true` an asserted row may never be skipped.
     pub skip: Option<&'static str>,
-    /// An asserted row too heavy for `cargo test` and CI's 30 minutes (an
-    /// hour of strength reductions): asserted wherever it is computed (by
-    /// the command its skip reason names, which fails on a miss), and the
-    /// one kind of asserted row `CI=true` lets `cargo test` skip, with that
-    /// reason shown.
-    pub heavy: bool,
 }
 
 impl RowSpec {
@@ -313,18 +325,10 @@ impl RowSpec {
         self.skip = Some(reason);
         self
     }
-    /// The spec of a heavy asserted row ([`RowSpec::heavy`]): skipped by
-    /// `cargo test` (also under `CI=true`) with `reason`, which names the
-    /// command that computes and asserts it.
-    pub const fn heavy(mut self, reason: &'static str) -> Self {
-        self.skip = Some(reason);
-        self.heavy = true;
-        self
-    }
     /// Whether a failure of the row fails the run (asserted, or an asserted
     /// comparison).
     pub fn is_asserted(&self) -> bool {
-        matches!(self.kind, SpecKind::Asserted(_) | SpecKind::Compared(true))
+        matches!(self.kind, SpecKind::Asserted(_) | SpecKind::Bounded(..) | SpecKind::Compared(true))
     }
     /// How a recorded row differs from this spec (`None`: it does not):
     /// id, case, quantity and source; the kind with its tolerance or goal
@@ -347,6 +351,7 @@ impl RowSpec {
         let kind_ok = match (&self.kind, &c.kind) {
             (_, Kind::Skipped { .. }) => true,
             (SpecKind::Asserted(t), Kind::Asserted { tolerance }) => same(*t, *tolerance),
+            (SpecKind::Bounded(a, b), Kind::Bounded { above, below }) => same(*a, *above) && same(*b, *below),
             (SpecKind::Reported(g), Kind::Reported { goal }) => match (g, goal) {
                 (Goal::Within(a), Goal::Within(b)) => same(*a, *b),
                 (a, b) => a == b,
@@ -357,7 +362,7 @@ impl RowSpec {
         if !kind_ok {
             diffs.push(format!("kind {:?} (the spec: {:?})", c.kind, self.kind));
         }
-        let numeric = matches!(c.kind, Kind::Asserted { .. } | Kind::Reported { .. });
+        let numeric = matches!(c.kind, Kind::Asserted { .. } | Kind::Bounded { .. } | Kind::Reported { .. });
         if let (Some(r), true) = (self.reference, numeric) {
             if !same(r, c.reference) {
                 diffs.push(format!("reference {:e} (the spec: {r:e})", c.reference));
@@ -374,6 +379,7 @@ impl RowSpec {
             reference: f64::NAN,
             kind: match self.kind {
                 SpecKind::Asserted(tolerance) => Kind::Asserted { tolerance },
+                SpecKind::Bounded(above, below) => Kind::Bounded { above, below },
                 SpecKind::Reported(goal) => Kind::Reported { goal },
                 SpecKind::Compared(asserted) => Kind::Compared { asserted, matches: false },
             },
@@ -435,7 +441,7 @@ impl Skips<'_> {
         match *self {
             Skips::Any => None,
             Skips::Registry { ci, also } => {
-                if ci && spec.is_asserted() && !spec.heavy {
+                if ci && spec.is_asserted() {
                     Some("an asserted row may not be skipped under CI=true".into())
                 } else if spec.skip.is_none() && !also.iter().any(|(id, _)| *id == spec.id) {
                     Some("its spec does not allow a skip (RowSpec::skip is None)".into())
@@ -560,25 +566,7 @@ impl Table {
         );
         let esc = |s: &str| s.replace('|', "\\|");
         for (c, status) in &self.rows {
-            let num = |v: f64| if v.is_nan() { "-".to_string() } else { format!("{v:.5e}") };
-            let (ours, reference, err) = match &c.kind {
-                Kind::Compared { .. } => (c.ours_text.clone(), c.reference_text.clone(), "-".to_string()),
-                Kind::Skipped { .. } => ("-".into(), "-".into(), "-".into()),
-                _ if *status == Status::Missing => ("-".into(), "-".into(), "-".into()),
-                Kind::Reported { goal: Goal::AtLeast | Goal::AtMost } => {
-                    (num(c.ours), num(c.reference), "-".to_string())
-                }
-                _ => (num(c.ours), num(c.reference), format!("{:.2e}", c.rel_error())),
-            };
-            let bound = match &c.kind {
-                Kind::Asserted { tolerance } => format!("{tolerance:.1e}"),
-                Kind::Reported { goal: Goal::Within(t) } => format!("goal {t:.1e}"),
-                Kind::Reported { goal: Goal::AtLeast } => "goal: at least the reference".into(),
-                Kind::Reported { goal: Goal::AtMost } => "goal: at most the reference".into(),
-                Kind::Compared { asserted: true, .. } => "asserted".into(),
-                Kind::Compared { asserted: false, .. } => "reported".into(),
-                Kind::Skipped { .. } => "-".into(),
-            };
+            let [ours, reference, err, bound] = cells(c, *status);
             let mut result = status.label().to_string();
             for extra in [
                 c.defect.as_deref().unwrap_or(""),
@@ -605,4 +593,37 @@ impl Table {
         }
         md
     }
+}
+
+/// A number as the tables show it (`-` for NaN).
+pub(crate) fn num(v: f64) -> String {
+    if v.is_nan() {
+        "-".to_string()
+    } else {
+        format!("{v:.5e}")
+    }
+}
+
+/// (ours, reference, relative error, tolerance or goal) as both tables (the
+/// markdown and the web page) show them; a bounded row's error is signed.
+pub(crate) fn cells(c: &Check, status: Status) -> [String; 4] {
+    let (ours, reference, err) = match &c.kind {
+        Kind::Compared { .. } => (c.ours_text.clone(), c.reference_text.clone(), "-".to_string()),
+        Kind::Skipped { .. } => ("-".into(), "-".into(), "-".into()),
+        _ if status == Status::Missing => ("-".into(), "-".into(), "-".into()),
+        Kind::Reported { goal: Goal::AtLeast | Goal::AtMost } => (num(c.ours), num(c.reference), "-".to_string()),
+        Kind::Bounded { .. } => (num(c.ours), num(c.reference), format!("{:+.2e}", c.signed_error())),
+        _ => (num(c.ours), num(c.reference), format!("{:.2e}", c.rel_error())),
+    };
+    let bound = match &c.kind {
+        Kind::Asserted { tolerance } => format!("{tolerance:.1e}"),
+        Kind::Bounded { above, below } => format!("+{above:.1e} / -{below:.1e}"),
+        Kind::Reported { goal: Goal::Within(t) } => format!("goal {t:.1e}"),
+        Kind::Reported { goal: Goal::AtLeast } => "goal: at least the reference".into(),
+        Kind::Reported { goal: Goal::AtMost } => "goal: at most the reference".into(),
+        Kind::Compared { asserted: true, .. } => "asserted".into(),
+        Kind::Compared { asserted: false, .. } => "reported".into(),
+        Kind::Skipped { .. } => "-".into(),
+    };
+    [ours, reference, err, bound]
 }

@@ -16,7 +16,7 @@ use super::citations::{Citation, References};
 use super::figures::{data_uri, note, supports};
 use super::header::RunHeader;
 use super::markdown::{escape, inline, slug, to_html};
-use super::{Check, Goal, Kind, Status, Table};
+use super::{cells, Check, Kind, Status, Table};
 
 /// A family of cases: the rows whose id starts with one of `prefixes`.
 struct Family {
@@ -184,35 +184,6 @@ fn summary(p: &Page, rows: &[(&Check, Status, Option<Citation>)]) -> String {
     out
 }
 
-/// The number `v` as the markdown table writes it.
-fn num(v: f64) -> String {
-    if v.is_nan() {
-        "-".to_string()
-    } else {
-        format!("{v:.5e}")
-    }
-}
-
-/// (ours, reference, relative error, tolerance or goal) as the markdown table has them.
-fn cells(c: &Check, status: Status) -> [String; 4] {
-    let (ours, reference, err) = match &c.kind {
-        Kind::Compared { .. } => (c.ours_text.clone(), c.reference_text.clone(), "-".to_string()),
-        Kind::Skipped { .. } => ("-".into(), "-".into(), "-".into()),
-        _ if status == Status::Missing => ("-".into(), "-".into(), "-".into()),
-        Kind::Reported { goal: Goal::AtLeast | Goal::AtMost } => (num(c.ours), num(c.reference), "-".to_string()),
-        _ => (num(c.ours), num(c.reference), format!("{:.2e}", c.rel_error())),
-    };
-    let bound = match &c.kind {
-        Kind::Asserted { tolerance } => format!("{tolerance:.1e}"),
-        Kind::Reported { goal: Goal::Within(t) } => format!("goal {t:.1e}"),
-        Kind::Reported { goal: Goal::AtLeast } => "goal: at least the reference".into(),
-        Kind::Reported { goal: Goal::AtMost } => "goal: at most the reference".into(),
-        Kind::Compared { asserted: true, .. } => "asserted".into(),
-        Kind::Compared { asserted: false, .. } => "reported".into(),
-        Kind::Skipped { .. } => "-".into(),
-    };
-    [ours, reference, err, bound]
-}
 
 /// The table, one `<tbody>` per family.
 fn table(rows: &[(&Check, Status, Option<Citation>)], figures: &[String]) -> String {

@@ -367,6 +367,97 @@ impl PublishedSlopeRun {
         Ok(Self { results, seconds, bishop })
     }
 
+    /// Runs `slopes` (each [`PublishedSlopeRun::run`]'s reductions and LEM)
+    /// on `workers` threads, each reduction alone on one thread (a rayon
+    /// pool of one: the results are bit for bit those of any thread count),
+    /// the largest meshes first so that the longest reduction does not start
+    /// last. The runs come back in the order of `slopes`; `progress` hears
+    /// each reduction as it starts.
+    pub fn run_all(
+        slopes: &[&crate::harness::registry::PublishedSlope],
+        workers: usize,
+        progress: &(dyn Fn(&str) + Sync),
+    ) -> Result<Vec<Self>, crate::error::Error> {
+        use std::sync::atomic::{AtomicUsize, Ordering};
+        use std::sync::Mutex;
+        let path = |p: &'static str| std::path::Path::new(p);
+        let mut jobs: Vec<(usize, usize, u64)> = Vec::new();
+        for (i, slope) in slopes.iter().enumerate() {
+            for (k, scene) in slope.scenes.iter().enumerate() {
+                // The mesh file's size stands for the reduction's cost.
+                let size = crate::scene::Scene::load(path(scene))
+                    .ok()
+                    .and_then(|s| std::fs::metadata(s.mesh_path()).ok())
+                    .map_or(0, |m| m.len());
+                jobs.push((i, k, size));
+            }
+        }
+        jobs.sort_by(|a, b| b.2.cmp(&a.2).then(a.0.cmp(&b.0)).then(a.1.cmp(&b.1)));
+        type Done = (crate::drivers::SrmResult, f64);
+        let done: Mutex<Vec<Vec<Option<Done>>>> = Mutex::new(slopes.iter().map(|_| vec![None, None, None]).collect());
+        let first_error: Mutex<Option<crate::error::Error>> = Mutex::new(None);
+        let next = AtomicUsize::new(0);
+        std::thread::scope(|scope| {
+            for _ in 0..workers.max(1) {
+                scope.spawn(|| {
+                    let pool = match rayon::ThreadPoolBuilder::new().num_threads(1).build() {
+                        Ok(pool) => pool,
+                        Err(e) => {
+                            let e = crate::error::Error::io("rayon thread pool", std::io::Error::other(e.to_string()));
+                            if let Ok(mut f) = first_error.lock() {
+                                f.get_or_insert(e);
+                            }
+                            return;
+                        }
+                    };
+                    loop {
+                        let j = next.fetch_add(1, Ordering::SeqCst);
+                        let Some(&(i, k, _)) = jobs.get(j) else { break };
+                        if first_error.lock().map_or(true, |f| f.is_some()) {
+                            break;
+                        }
+                        let scene = slopes[i].scenes[k];
+                        progress(&format!("{}: cdem srm {scene}", slopes[i].name));
+                        let t0 = std::time::Instant::now();
+                        let result = pool.install(|| {
+                            let loaded = crate::scene::Scene::load(path(scene))?;
+                            crate::drivers::run_srm(&loaded, &mut |_| {}).map(|r| r.0)
+                        });
+                        let seconds = t0.elapsed().as_secs_f64();
+                        match result {
+                            Ok(r) => {
+                                if let Ok(mut d) = done.lock() {
+                                    d[i][k] = Some((r, seconds));
+                                }
+                            }
+                            Err(e) => {
+                                if let Ok(mut f) = first_error.lock() {
+                                    f.get_or_insert(e);
+                                }
+                            }
+                        }
+                    }
+                });
+            }
+        });
+        if let Some(e) = first_error.into_inner().ok().flatten() {
+            return Err(e);
+        }
+        let done = done.into_inner().unwrap_or_default();
+        let mut runs = Vec::new();
+        for (slope, shapes) in slopes.iter().zip(done) {
+            let input = crate::drivers::lem::load_lem_input(path(slope.lem_input))?;
+            let bishop = crate::lem::analyse(&input)?.fs.bishop.as_ref().map_or(f64::NAN, |b| *b);
+            let (mut results, mut seconds) = (Vec::new(), Vec::new());
+            for (r, s) in shapes.into_iter().flatten() {
+                results.push(r);
+                seconds.push(s);
+            }
+            runs.push(Self { results, seconds, bishop });
+        }
+        Ok(runs)
+    }
+
     /// The factors of safety (NaN without a bracket).
     pub fn factors(&self) -> Vec<f64> {
         self.results.iter().map(|r| r.fs.unwrap_or(f64::NAN)).collect()
