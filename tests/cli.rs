@@ -389,3 +389,34 @@ fn srm_on_plastic_blocks_marks_the_tension_cracks() {
     assert!(trials.iter().map(volumes).any(|(t, _)| t > 0.0), "{trials:?}");
     let _ = std::fs::remove_dir_all(&out);
 }
+
+/// `cdem run --mesh-check` on the confined column (its `.geo` takes no
+/// `refine`: every hexahedron split into eight): the elastic run on 40 and
+/// 320 elements, each mesh's min u_z within 1 % of the analytic top
+/// displacement (references/column.md), the extrapolation of two meshes
+/// with its order assumed, and the lines printed.
+#[test]
+fn run_mesh_check_refines_the_column_and_extrapolates_its_headline_values() {
+    let out = temp_dir("run-mesh-check");
+    let o = Command::new(env!("CARGO_BIN_EXE_cdem"))
+        .args(["run", "verification/cases/column/column.toml", "--out", out.to_str().unwrap(), "--mesh-check"])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{stdout}{}", String::from_utf8_lossy(&o.stderr));
+    assert!(stdout.contains("min u_z") && stdout.contains("converged (+/-") && stdout.contains("order 2.00 assumed"));
+    let check: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("mesh-check.json")).unwrap()).unwrap();
+    let meshes = check["meshes"].as_array().unwrap();
+    let elements: Vec<u64> = meshes.iter().map(|m| m["elements"].as_u64().unwrap()).collect();
+    assert_eq!(elements, [40, 320]);
+    let analytic = cdem::harness::registry::column_uz(cdem::harness::registry::CONFINED_COLUMN.height);
+    for m in meshes {
+        let uz = m["min_uz"].as_f64().unwrap();
+        assert!((uz / analytic - 1.0).abs() < 0.01, "min u_z {uz} against the analytic {analytic}");
+    }
+    assert_eq!(check["min_uz"]["order_source"], "assumed_two_meshes");
+    assert!(check["min_szz"]["value"].as_f64().is_some());
+    assert!(out.join("summary.json").exists() && out.join("mesh-check").is_dir());
+    let _ = std::fs::remove_dir_all(&out);
+}

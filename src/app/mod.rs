@@ -27,18 +27,51 @@ pub enum RunProgress {
 /// `cdem run SCENE --out DIR`: phase 1 and, for a scene with `[failure]`,
 /// phase 2; writes the run's files and, with `[analysis]`, `analysis.png`.
 pub fn run(scene_path: &Path, out: &Path, progress: &mut dyn FnMut(RunProgress)) -> crate::Result<RunResult> {
+    let scene = loaded(scene_path, progress)?;
+    let result = crate::drivers::run_scene(&scene, &mut |step, ratio| progress(RunProgress::Step { step, ratio }))?;
+    write_run(&scene, &result, out)?;
+    Ok(result)
+}
+
+/// `cdem run SCENE --mesh-check [R,...] --out DIR`: [`run`]'s files, and
+/// `DIR/mesh-check.json`: the elastic state's headline values (the end of
+/// phase 1) on the meshes refined by each `R` (in `DIR/mesh-check/`) and
+/// their extrapolation ([`crate::drivers::mesh_check::run_mesh_check`],
+/// the same check as [`fem_mesh_check`]'s).
+pub fn run_mesh_check(
+    scene_path: &Path,
+    refine: &[f64],
+    out: &Path,
+    progress: &mut dyn FnMut(RunProgress),
+) -> crate::Result<(RunResult, crate::drivers::mesh_check::ElasticCheck)> {
+    let scene = loaded(scene_path, progress)?;
+    let (result, check) =
+        crate::drivers::mesh_check::run_mesh_check(&scene, refine, &out.join("mesh-check"), &mut |step, ratio| {
+            progress(RunProgress::Step { step, ratio })
+        })?;
+    write_run(&scene, &result, out)?;
+    crate::output::write_json(&out.join("mesh-check.json"), &check)?;
+    Ok((result, check))
+}
+
+/// The scene, its step budget reported.
+fn loaded(scene_path: &Path, progress: &mut dyn FnMut(RunProgress)) -> crate::Result<Scene> {
     let scene = Scene::load(scene_path)?;
     let budget = scene.solver.max_steps.unwrap_or(0) + scene.failure.as_ref().map_or(0, |f| f.max_steps.unwrap_or(0));
     progress(RunProgress::Loaded { budget });
-    let result = crate::drivers::run_scene(&scene, &mut |step, ratio| progress(RunProgress::Step { step, ratio }))?;
-    crate::output::write_run(&scene, &result, out)?;
+    Ok(scene)
+}
+
+/// The files of `cdem run`.
+fn write_run(scene: &Scene, result: &RunResult, out: &Path) -> crate::Result<()> {
+    crate::output::write_run(scene, result, out)?;
     if result.surface.is_some() {
-        figures::analysis::run_png(&result, &out.join("analysis.png"))?;
+        figures::analysis::run_png(result, &out.join("analysis.png"))?;
     }
     if let Some(r) = result.runout.as_ref().filter(|r| r.summary.ran) {
         figures::runout::runout_png(&result.model, r, &out.join("runout.png"))?;
     }
-    Ok(result)
+    Ok(())
 }
 
 /// `cdem srm SCENE --out DIR`: strength reduction; writes `srm.json`,

@@ -29,6 +29,13 @@ enum Command {
         scene: PathBuf,
         #[arg(long, default_value = "out")]
         out: PathBuf,
+        /// Also run phase 1 on meshes refined by each factor (default 2; `--mesh-check 2,4` for three)
+        /// and extrapolate the elastic state's min u_z and min sigma_zz (Richardson; second order
+        /// assumed without three meshes), as `cdem fem --mesh-check` does: DIR/mesh-check.json and
+        /// DIR/mesh-check/ (gmsh on the .geo beside the mesh when it takes `refine`, else every
+        /// element split into eight).
+        #[arg(long, value_delimiter = ',', num_args = 0.., default_missing_value = "2", value_name = "R")]
+        mesh_check: Option<Vec<f64>>,
     },
     /// Factor of safety by strength reduction (c/F, tan(phi)/F, T/F on the breakable interfaces
     /// and the plastic blocks, bracketing then bisection to a width of 0.01): DIR/srm.json,
@@ -322,7 +329,7 @@ fn main() -> ExitCode {
 fn command(cli: Cli) -> ExitCode {
     let reached = |r: cdem::Result<()>| r.map(|()| Outcome::Reached);
     let result = match cli.command {
-        Command::Run { scene, out } => run(&scene, &out),
+        Command::Run { scene, out, mesh_check } => run(&scene, &out, mesh_check.as_deref()),
         Command::Fem { scene, out, mesh_check } => fem(&scene, &out, mesh_check.as_deref()),
         Command::Srm { scene, out, mesh_check } => srm(&scene, &out, mesh_check.as_deref()),
         Command::Mesh { geo, out } if geo.extension().is_some_and(|e| e == "toml") => {
@@ -389,15 +396,23 @@ fn command(cli: Cli) -> ExitCode {
 }
 
 /// `cdem run`: phase 1 and, for a scene with `[failure]`, phase 2.
-fn run(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
+fn run(scene_path: &Path, out: &Path, mesh_check: Option<&[f64]>) -> cdem::Result<Outcome> {
     let pb = progress_bar(0);
-    let result = cdem::app::run(scene_path, out, &mut |p| match p {
+    let mut progress = |p: RunProgress| match p {
         RunProgress::Loaded { budget } => pb.set_length(budget as u64),
         RunProgress::Step { step, ratio } => {
             pb.set_position(step as u64);
             pb.set_message(format!("unbalanced ratio {ratio:.2e}"));
         }
-    })?;
+    };
+    let (result, check) = match mesh_check {
+        None => (cdem::app::run(scene_path, out, &mut progress)?, None),
+        Some(refine) => {
+            let refine = if refine.is_empty() { &cdem::drivers::mesh_check::DEFAULT_REFINE[..] } else { refine };
+            let (result, check) = cdem::app::run_mesh_check(scene_path, refine, out, &mut progress)?;
+            (result, Some(check))
+        }
+    };
     pb.finish_and_clear();
     let s = &result.summary;
     let p1 = s.phase1.as_ref().expect("a CDEM run has phase 1");
@@ -430,6 +445,9 @@ fn run(scene_path: &Path, out: &Path) -> cdem::Result<Outcome> {
     }
     if let Some(report) = &result.surface {
         print_surface(report);
+    }
+    if let Some(c) = &check {
+        print_elastic_check(c);
     }
     if let Some(r) = &s.runout {
         match (&r.reason, r.time_to_rest) {
@@ -657,14 +675,19 @@ fn fem(scene_path: &Path, out: &Path, mesh_check: Option<&[f64]>) -> cdem::Resul
         print_surface(report);
     }
     if let Some(c) = &check {
-        for m in &c.meshes {
-            println!("  refine {}: {} elements, min u_z {:.4e} m ({:.2} s)", m.refine, m.elements, m.min_uz, m.wall_s);
-        }
-        for line in &c.lines {
-            println!("{line}");
-        }
+        print_elastic_check(c);
     }
     Ok(if s.converged { Outcome::Reached } else { Outcome::OutOfSteps })
+}
+
+/// The lines of `cdem run --mesh-check` and `cdem fem --mesh-check`.
+fn print_elastic_check(c: &cdem::drivers::mesh_check::ElasticCheck) {
+    for m in &c.meshes {
+        println!("  refine {}: {} elements, min u_z {:.4e} m ({:.2} s)", m.refine, m.elements, m.min_uz, m.wall_s);
+    }
+    for line in &c.lines {
+        println!("{line}");
+    }
 }
 
 const LEM_HELP: &str = "Limit-equilibrium slope stability: ordinary, Bishop simplified and Spencer on circular

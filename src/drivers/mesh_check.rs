@@ -232,35 +232,39 @@ pub struct ElasticCheck {
     pub lines: Vec<String>,
 }
 
-/// The FEM of `scene` on its mesh and on the meshes refined by `refine`
-/// (written into `dir`), with the extrapolations of its headline values.
-pub fn fem_mesh_check(scene: &Scene, refine: &[f64], dir: &Path) -> Result<(super::FemRun, ElasticCheck), Error> {
+/// The headline values of one elastic solve on one mesh (the FEM's or
+/// phase 1 of `cdem run`'s): its [`crate::summary::Summary`]'s.
+fn headline(refine: f64, mesh: PathBuf, s: &crate::summary::Summary) -> ElasticMesh {
+    ElasticMesh { refine, mesh, elements: s.elements, min_uz: s.min_uz, min_szz: s.min_szz, wall_s: s.wall_s }
+}
+
+/// One solve of [`elastic_check`]: the scene (its mesh set), the factor and
+/// the mesh file, to the result and its headline values.
+type Solve<'a, R> = dyn FnMut(&Scene, f64, PathBuf) -> Result<(R, ElasticMesh), Error> + 'a;
+
+/// The elastic check shared by `cdem fem --mesh-check` and `cdem run
+/// --mesh-check`: `solve` on `scene`'s mesh (its result is returned) and on
+/// each mesh refined by `refine` (written into `dir`), then Richardson's
+/// extrapolation of min u_z and min sigma_zz.
+fn elastic_check<R>(
+    scene: &Scene,
+    refine: &[f64],
+    dir: &Path,
+    solve: &mut Solve<R>,
+) -> Result<(R, ElasticCheck), Error> {
     let geo = refinable_geo(scene);
     check_factors(refine, geo.is_none())?;
     let refined_by = match &geo {
         Some(g) => format!("gmsh on {} with refine multiplied by each factor", g.display()),
         None => "every element split into eight (no .geo beside the mesh takes refine)".to_string(),
     };
-    let one = |s: &Scene, r: f64, mesh: PathBuf| -> Result<(super::FemRun, ElasticMesh), Error> {
-        let run = super::run_fem(s)?;
-        let m = &run.solution;
-        let em = ElasticMesh {
-            refine: r,
-            mesh,
-            elements: m.cells.len(),
-            min_uz: m.summary.min_uz,
-            min_szz: m.summary.min_szz,
-            wall_s: m.summary.wall_s,
-        };
-        Ok((run, em))
-    };
-    let (own, first) = one(scene, 1.0, scene.mesh_path())?;
+    let (own, first) = solve(scene, 1.0, scene.mesh_path())?;
     let mut meshes = vec![first];
     for &r in refine {
         let msh = refined_mesh(scene, geo.as_deref(), r, dir)?;
         let mut s = scene.clone();
         s.mesh.file = msh.clone();
-        meshes.push(one(&s, r, msh)?.1);
+        meshes.push(solve(&s, r, msh)?.1);
     }
     let h: Vec<f64> = meshes.iter().map(|m| 1.0 / m.refine).collect();
     let uz: Vec<f64> = meshes.iter().map(|m| m.min_uz).collect();
@@ -284,6 +288,46 @@ pub fn fem_mesh_check(scene: &Scene, refine: &[f64], dir: &Path) -> Result<(supe
         lines.push(line("min sigma_zz", "Pa", v[0], min_szz));
     }
     Ok((own, ElasticCheck { refined_by, meshes, min_uz, min_szz, lines }))
+}
+
+/// The FEM of `scene` on its mesh and on the meshes refined by `refine`
+/// (written into `dir`), with the extrapolations of its headline values.
+pub fn fem_mesh_check(scene: &Scene, refine: &[f64], dir: &Path) -> Result<(super::FemRun, ElasticCheck), Error> {
+    elastic_check(scene, refine, dir, &mut |s, r, mesh| {
+        let run = super::run_fem(s)?;
+        let em = headline(r, mesh, &run.solution.summary);
+        Ok((run, em))
+    })
+}
+
+/// `cdem run --mesh-check`: the scene's run (returned whole, with its
+/// `[failure]` and `[runout]` phases if it has them) and the check of its
+/// elastic state: phase 1 on the scene's mesh and on the meshes refined by
+/// `refine` (written into `dir`), min u_z and min sigma_zz extrapolated as
+/// [`fem_mesh_check`] does. A scene with a phase 2 or a runout gets one more
+/// phase-1 run on its own mesh, so that every mesh's values are those of
+/// the elastic state (the end of phase 1).
+pub fn run_mesh_check(
+    scene: &Scene,
+    refine: &[f64],
+    dir: &Path,
+    progress: &mut dyn FnMut(usize, f64),
+) -> Result<(super::RunResult, ElasticCheck), Error> {
+    let elastic_only = scene.failure.is_none() && scene.runout.is_none();
+    let mut elastic = scene.clone();
+    elastic.failure = None;
+    elastic.runout = None;
+    let (own, check) = elastic_check(&elastic, refine, dir, &mut |s, r, mesh| {
+        let mut quiet = |_: usize, _: f64| {};
+        let run = super::run_scene(s, if r == 1.0 && elastic_only { &mut *progress } else { &mut quiet })?;
+        let em = headline(r, mesh, &run.summary);
+        Ok(((r == 1.0 && elastic_only).then_some(run), em))
+    })?;
+    let own = match own {
+        Some(run) => run,
+        None => super::run_scene(scene, progress)?,
+    };
+    Ok((own, check))
 }
 
 #[cfg(test)]

@@ -629,6 +629,12 @@ pub const GOAL_PLASTIC_SRM_SECONDS: f64 = 30.0;
 /// Issue 28, item 1: the plastic-block `cdem srm` of the 1000-element paper
 /// slope in at most 30 s (issue 24 asks 60 s; issue 28 halves it).
 pub const GOAL_PLASTIC_PAPER_SRM_SECONDS: f64 = 30.0;
+/// Issue 61: `cdem srm --mesh-check` (two meshes, the default) on Griffiths &
+/// Lane's hexahedra in at most 4 times the plain `cdem srm`'s wall time, set
+/// before it was measured: the three-mesh check took 3.9x its own reduction
+/// (references/srm.md, "Discretisation error"). Measured 5.0x by hand on
+/// one thread and 4.08x in `cdem perf` on two (the same section): not met.
+pub const GOAL_MESH_CHECK_COST_RATIO: f64 = 4.0;
 /// 3DEC's default step cap of one strength-reduction trial: 50,000 steps.
 pub const THREEDEC_TRIAL_STEP_CAP: f64 = 50_000.0;
 
@@ -1141,6 +1147,7 @@ pub const ROWS: &[RowSpec] = &[
     spec("perf/srm/plastic-gl1-hex/trial-steps-mean", SRM_PLASTIC_GL1_CASE, "mean steps per trial (3DEC's default cap 50,000)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),
     spec("perf/srm/plastic-gl1-hex/trial-steps-max", SRM_PLASTIC_GL1_CASE, "largest steps of a trial (3DEC's default cap 50,000)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),
     spec("perf/srm/plastic-gl1-hex/fs-change", SRM_PLASTIC_GL1_CASE, "change of FS, with the foresight rule against without it (goal <= the bracket width 0.01)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),
+    spec("perf/srm/mesh-check-gl1-hex/cost-ratio", SRM_PLASTIC_GL1_CASE, "cdem srm --mesh-check (refine 2) wall time / plain cdem srm's, same run (goal <= 4)", Reported(Goal::AtMost), SRM_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),
     spec("perf/srm/plastic-paper-slope/wall", SRM_PLASTIC_PAPER_CASE, "cdem srm wall time (s) (goal <= 30)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),
     spec("perf/srm/plastic-paper-slope/trial-steps-mean", SRM_PLASTIC_PAPER_CASE, "mean steps per trial (3DEC's default cap 50,000)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),
     spec("perf/srm/plastic-paper-slope/trial-steps-max", SRM_PLASTIC_PAPER_CASE, "largest steps of a trial (3DEC's default cap 50,000)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs").may_skip(SRM_PERF_SKIP),

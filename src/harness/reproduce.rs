@@ -727,6 +727,7 @@ fn error_against_run_time(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> R
     let _ = writeln!(rep.md, "## Error against run time\n\nRelative L2 error of the displacement field (column: analytic; slope: FEM on the 0.5 m mesh), one factor varied at a time.\n\n{table}");
     rep.figure("column", "study/study-column.png");
     rep.figure("slope", "study/study-slope.png");
+    rep.figure("factor of safety", "study/study-fs.png");
     Ok(())
 }
 

@@ -199,7 +199,8 @@ pub fn column_base_point() -> Result<(f64, f64), Error> {
 }
 
 /// Runs the whole study into `out/study.csv`, `out/study-column.png`,
-/// `out/study-slope.png`.
+/// `out/study-slope.png`, and draws `out/study-fs.png`
+/// ([`fs_against_run_time`]).
 pub fn run_study(out: &Path, progress: &mut dyn FnMut(&str)) -> Result<Vec<StudyRow>, Error> {
     std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
     let column = registry::COLUMN.scene()?;
@@ -268,6 +269,79 @@ pub fn run_study(out: &Path, progress: &mut dyn FnMut(&str)) -> Result<Vec<Study
             r.case, r.method, r.varied, r.elements, r.joint_modulus, r.tolerance, r.error, r.wall_s, r.steps
         );
     }
+    md.push_str(&fs_against_run_time(&out.join("study-fs.png"))?);
     crate::output::write_atomic(&out.join("study.md"), md.as_bytes())?;
     Ok(rows)
+}
+
+/// The factor of safety against run time (issue 61 item 4) on Griffiths &
+/// Lane's hexahedra and the paper slope: each mesh's factor of
+/// `cdem srm --mesh-check 1.5,2` as its error against Richardson's
+/// extrapolation, against the wall time of its reduction, from the figures
+/// references/srm.md measured ([`registry::MESH_CHECK_STUDIES`]; no
+/// reduction runs here). Writes `path`; returns its table.
+pub fn fs_against_run_time(path: &Path) -> Result<String, Error> {
+    let studies = &registry::MESH_CHECK_STUDIES;
+    let points: Vec<Vec<(f64, f64)>> = studies
+        .iter()
+        .map(|s| s.meshes.iter().map(|&(_, fs, wall)| (wall, 100.0 * (fs / s.extrapolated - 1.0))).collect())
+        .collect();
+    let names: Vec<String> = studies
+        .iter()
+        .map(|s| format!("{} (extrapolated FS {:.4} +/- {:.3})", s.name, s.extrapolated, s.uncertainty))
+        .collect();
+    let (t0, t1) = points.iter().flatten().fold((f64::INFINITY, 0.0f64), |(a, b), p| (a.min(p.0), b.max(p.0)));
+    let zero = [(t0, 0.0), (t1, 0.0)];
+    let mut series: Vec<Series> = names.iter().zip(&points).map(|(n, p)| Series { name: n, points: p }).collect();
+    series.push(Series { name: "the extrapolated FS", points: &zero });
+    line_plot(
+        path,
+        "factor of safety against run time: 3 meshes each, the coarsest highest",
+        "wall time of the reduction, bracket 0.0025 (s)",
+        "FS / extrapolated FS - 1 (%)",
+        &series,
+        Scale::Log,
+        Scale::Linear,
+    )?;
+    let mut md = String::from(
+        "\n### Factor of safety against run time (`cdem srm --mesh-check 1.5,2`; references/srm.md, \"Discretisation error\")\n\n\
+         | slope | elements | FS (bracket 0.0025) | against the extrapolated | wall (s) | timed by |\n|---|---|---|---|---|---|\n",
+    );
+    for s in studies {
+        for &(elements, fs, wall) in &s.meshes {
+            let _ = writeln!(
+                md,
+                "| {} | {elements} | {fs:.4} | {:+.1} % | {wall:.1} | {} |",
+                s.name,
+                100.0 * (fs / s.extrapolated - 1.0),
+                s.timing
+            );
+        }
+        let _ =
+            writeln!(md, "| {} | extrapolated | {:.4} +/- {:.3} | 0 | - | - |", s.name, s.extrapolated, s.uncertainty);
+    }
+    Ok(md)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The factor-of-safety figure is drawn from references/srm.md's
+    /// figures alone: its table has each slope's three meshes and the
+    /// extrapolated factor, and the committed meshes' errors that
+    /// references/srm.md states (+2.5 %, +3.3 %, the unsafe side).
+    #[test]
+    fn the_fs_figure_tabulates_both_slopes_three_meshes() {
+        let path = std::env::temp_dir().join(format!("cdem-study-fs-{}.png", std::process::id()));
+        let md = fs_against_run_time(&path).unwrap();
+        assert!(std::fs::metadata(&path).unwrap().len() > 1000);
+        for s in &registry::MESH_CHECK_STUDIES {
+            assert_eq!(md.lines().filter(|l| l.starts_with(&format!("| {} |", s.name))).count(), 4, "{md}");
+        }
+        assert!(md.contains("| 384 | 1.3928 | +2.5 % |") && md.contains("| 1000 | 1.0928 | +3.3 % |"), "{md}");
+        if std::env::var_os("CDEM_KEEP_FIGURE").is_none() {
+            let _ = std::fs::remove_file(&path);
+        }
+    }
 }

@@ -45,6 +45,51 @@ pub struct FailureFigures {
     pub plastic: Vec<SrmFigure>,
     /// The same without the trials' foresight rule, run just before each.
     pub plastic_plain: Vec<SrmFigure>,
+    /// `cdem srm --mesh-check` on Griffiths & Lane's hexahedra (issue 61:
+    /// its cost against the plain reduction's, [`mesh_check_figure`]).
+    pub mesh_check: Option<MeshCheckFigure>,
+}
+
+/// `cdem srm --mesh-check` (its default refinement,
+/// [`crate::drivers::mesh_check::DEFAULT_REFINE`]) on Griffiths & Lane's
+/// committed hexahedra, timed in the run that times the plain reduction.
+#[derive(Debug, Clone, Serialize)]
+pub struct MeshCheckFigure {
+    /// The whole check: both meshes' reductions and the meshing (s).
+    pub seconds: f64,
+    /// The check's own line ("FS ... on this mesh; about ... converged ...").
+    pub line: String,
+    /// The check over its own reduction on the committed mesh (bracket 0.0025).
+    pub over_own: f64,
+    /// Why the check failed (gmsh missing, ...), if it did.
+    pub error: Option<String>,
+}
+
+/// Times `cdem srm --mesh-check` on [`registry::PLASTIC_GL1_HEX`] under
+/// `root`, its meshes in a temporary folder; a failure is kept as
+/// [`MeshCheckFigure::error`] (the row then carries a defect).
+pub fn mesh_check_figure(root: &Path, progress: &mut dyn FnMut(&str)) -> MeshCheckFigure {
+    let dir = std::env::temp_dir().join(format!("cdem-perf-mesh-check-{}", std::process::id()));
+    let t = Instant::now();
+    let run = Scene::load(&root.join(registry::PLASTIC_GL1_HEX.input)).and_then(|scene| {
+        crate::drivers::mesh_check::mesh_check(&scene, &crate::drivers::mesh_check::DEFAULT_REFINE, &dir, &mut |p| {
+            if let crate::drivers::mesh_check::CheckProgress::Mesh(r) = p {
+                progress(&format!("cdem srm --mesh-check, Griffiths & Lane's hexahedra, refine {r}"));
+            }
+        })
+    });
+    let seconds = t.elapsed().as_secs_f64();
+    let _ = std::fs::remove_dir_all(&dir);
+    match run.map(|(r, _)| r.discretisation) {
+        Ok(Some(d)) => MeshCheckFigure { seconds, line: d.line, over_own: d.cost_ratio, error: None },
+        Ok(None) => MeshCheckFigure {
+            seconds,
+            line: String::new(),
+            over_own: f64::NAN,
+            error: Some("no discretisation section".into()),
+        },
+        Err(e) => MeshCheckFigure { seconds, line: String::new(), over_own: f64::NAN, error: Some(e.to_string()) },
+    }
 }
 
 /// [`phase2_figure`], and with `srm` every [`srm_figure`] of [`SRM_VARIANTS`]
@@ -61,7 +106,8 @@ pub fn failure_figures(root: &Path, srm: bool, progress: &mut dyn FnMut(&str)) -
         plain.push(plastic_srm_figure(root, v, case, false, progress)?);
         plastic.push(plastic_srm_figure(root, v, case, true, progress)?);
     }
-    Ok(FailureFigures { phase2, srm: warm, srm_elastic: elastic, plastic, plastic_plain: plain })
+    let mesh_check = srm.then(|| mesh_check_figure(root, progress));
+    Ok(FailureFigures { phase2, srm: warm, srm_elastic: elastic, plastic, plastic_plain: plain, mesh_check })
 }
 
 /// The plastic-block strength reductions timed beside the slip-surface

@@ -203,7 +203,29 @@ pub fn srm_perf_rows(f: &SrmFigure, e: &SrmFigure) -> Vec<Check> {
 pub fn srm_perf_skipped(reason: &str) -> Vec<Check> {
     use crate::harness::perf::failure::{PLASTIC_SRM_VARIANTS, SRM_VARIANTS};
     let variants = SRM_VARIANTS.iter().map(|v| v.0).chain(PLASTIC_SRM_VARIANTS.iter().map(|v| v.0));
-    variants.flat_map(srm_perf_ids).map(|id| row(&id).skipped(reason)).collect()
+    variants.flat_map(srm_perf_ids).chain([MESH_CHECK_ROW.to_string()]).map(|id| row(&id).skipped(reason)).collect()
+}
+
+/// The row of `cdem srm --mesh-check`'s cost (issue 61).
+pub const MESH_CHECK_ROW: &str = "perf/srm/mesh-check-gl1-hex/cost-ratio";
+
+/// The wall time of `cdem srm --mesh-check` on Griffiths & Lane's
+/// hexahedra over that of the plain `cdem srm` of the same run (`plain`,
+/// the foresight rule on as `cdem srm` runs), against
+/// [`reg::GOAL_MESH_CHECK_COST_RATIO`]; a defect if either failed.
+pub fn mesh_check_row(m: &crate::harness::perf::failure::MeshCheckFigure, plain: Option<&SrmFigure>) -> Check {
+    let plain_s = plain.map_or(f64::NAN, |p| p.seconds);
+    let c =
+        row(MESH_CHECK_ROW).value(m.seconds / plain_s, reg::GOAL_MESH_CHECK_COST_RATIO, m.seconds).with_note(format!(
+            "the check {:.1} s (refine 1 and 2, brackets 0.0025; {:.2}x its own reduction on the committed mesh), the \
+             plain cdem srm {plain_s:.1} s in the same run; {}",
+            m.seconds, m.over_own, m.line
+        ));
+    match (&m.error, plain) {
+        (Some(why), _) => c.with_defect(format!("the mesh check failed: {why}")),
+        (None, None) => c.with_defect("the plain reduction of Griffiths & Lane's hexahedra was not timed"),
+        _ => c,
+    }
 }
 
 /// The ids of the timed ensemble rows ([`ensemble_perf_rows`]).

@@ -285,6 +285,10 @@ pub fn perf_checks(head: &Headline, failure: &FailureFigures, ensemble: Option<&
     {
         rows.extend(crate::harness::perf::rows::srm_perf_rows(f, e));
     }
+    if let Some(m) = &failure.mesh_check {
+        let plain = failure.plastic.iter().find(|f| f.variant == "plastic-gl1-hex");
+        rows.push(crate::harness::perf::rows::mesh_check_row(m, plain));
+    }
     match ensemble {
         Some(e) => rows.extend(crate::harness::perf::rows::ensemble_perf_rows(e)),
         None => rows.extend(crate::harness::perf::rows::ensemble_perf_skipped("not run: cdem perf --no-ensemble")),

@@ -90,6 +90,14 @@ pub const FIGURES: &[FigureNote] = &[
         rows: WULONG_DRY,
     },
     FigureNote {
+        file: "study/study-fs.png",
+        look_for: "each plastic slope's factor of safety on three meshes (references/srm.md's measured figures, not \
+                   this run's) falling onto its extrapolation from above: the committed meshes err on the unsafe \
+                   side by 2.5 % (Griffiths & Lane) and 3.3 % (the paper slope), and halving the size costs 2 to 4 \
+                   times the run time.",
+        rows: &["fserror/gl1/*", "plastic/gl1-hex-srm", "plastic/paper-slope-srm"],
+    },
+    FigureNote {
         file: "study/study-*.png",
         look_for: "the error falling as the mesh is refined or the tolerance tightened, against what each costs in \
                    seconds: the cheapest setting for a given error.",

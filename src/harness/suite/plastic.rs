@@ -281,7 +281,9 @@ pub fn paper_slope_row() -> Result<SlopeRun, crate::error::Error> {
 }
 
 /// `cdem srm` on `case` as the row `id` against `reference`, with a defect
-/// unless the bracket is at most [`crate::harness::suite::srm::BRACKET_WIDTH`] wide.
+/// unless the bracket is at most [`crate::harness::suite::srm::BRACKET_WIDTH`] wide,
+/// and the row's discretisation figure in its note
+/// ([`crate::harness::registry::with_mesh_error`]).
 fn slope_row(case: &crate::harness::registry::Case, id: &str, reference: f64) -> Result<SlopeRun, crate::error::Error> {
     let t0 = std::time::Instant::now();
     let (result, _) = crate::drivers::run_srm(&case.scene()?, &mut |_| {})?;
@@ -290,7 +292,7 @@ fn slope_row(case: &crate::harness::registry::Case, id: &str, reference: f64) ->
     if let Some(why) = bracket_defect(&result) {
         row = row.with_defect(why);
     }
-    Ok(SlopeRun { result, row })
+    Ok(SlopeRun { result, row: crate::harness::registry::with_mesh_error(row) })
 }
 
 /// Why a strength reduction's result is not a factor of safety: no bracket
@@ -492,7 +494,7 @@ impl PublishedSlopeRun {
             if let Some(why) = bracket_defect(result) {
                 row = row.with_defect(why);
             }
-            rows.push(row);
+            rows.push(reg::with_mesh_error(row));
         }
         let mut spread = reg::row(&ids[3])
             .value(mesh_spread(&fs), 0.0, self.seconds.iter().sum())
@@ -517,7 +519,7 @@ pub fn published_slope_skipped(
     reason: &str,
 ) -> [crate::harness::report::Check; 4] {
     use crate::harness::registry as reg;
-    reg::published_slope_ids(slope).map(|id| reg::row(&id).skipped(reason))
+    reg::published_slope_ids(slope).map(|id| reg::with_mesh_error(reg::row(&id).skipped(reason)))
 }
 
 /// The published slopes whose rows only `cdem reproduce --published-slopes`

@@ -141,7 +141,9 @@ pub fn convergence(path: &Path, s: &EnsembleSummary) -> crate::Result<()> {
             .margin(12)
             .x_label_area_size(40)
             .y_label_area_size(70)
-            .build_cartesian_2d((n0..n1).log_scale(), (lo - pad)..(hi + pad))
+            // A margin of 15 % either side on the log axis: the first and last
+            // intervals' caps are not cut by the frame.
+            .build_cartesian_2d((n0 / 1.15..n1 * 1.15).log_scale(), (lo - pad)..(hi + pad))
             .map_err(|e| plot_err(path, e))?;
         chart
             .configure_mesh()

@@ -93,7 +93,14 @@ pub fn line_plot(
             let fmt = |log: bool| {
                 move |v: &f64| {
                     if log {
-                        format!("{v:.0e}")
+                        // Only 1, 2 and 5 of each decade: every minor tick
+                        // labelled runs the labels of a decade together.
+                        let m = v / 10f64.powf(v.log10().floor());
+                        if [1.0, 2.0, 5.0, 10.0].iter().any(|k| (m - k).abs() < 1e-6 * k) {
+                            format!("{v:.0e}")
+                        } else {
+                            String::new()
+                        }
                     } else {
                         format!("{v:.6}").trim_end_matches('0').trim_end_matches('.').to_string()
                     }
