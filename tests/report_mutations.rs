@@ -271,7 +271,9 @@ fn a_factor_of_safety_moved_3_percent_to_the_unsafe_side_fails() {
         reg::ROWS.iter().filter(|s| s.id.starts_with("plastic/") && s.id.ends_with("-srm")).collect();
     assert_eq!(fs_rows.len(), 19, "the 19 plastic strength-reduction rows");
     for spec in fs_rows {
-        let SpecKind::Bounded(above, below) = spec.kind else { panic!("{}: {:?} has no direction", spec.id, spec.kind) };
+        let SpecKind::Bounded(above, below) = spec.kind else {
+            panic!("{}: {:?} has no direction", spec.id, spec.kind)
+        };
         assert!(above < 0.05 && below <= 0.035 && above > 0.0 && below > 0.0, "{}: {above} {below}", spec.id);
         let reference = spec.reference.unwrap_or(1.38);
         let at = |e: f64| spec.value(reference * (1.0 + e), reference, 1.0).status();

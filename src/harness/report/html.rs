@@ -184,7 +184,6 @@ fn summary(p: &Page, rows: &[(&Check, Status, Option<Citation>)]) -> String {
     out
 }
 
-
 /// The table, one `<tbody>` per family.
 fn table(rows: &[(&Check, Status, Option<Citation>)], figures: &[String]) -> String {
     let mut out = String::from(
