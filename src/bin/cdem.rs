@@ -760,23 +760,29 @@ mod tests {
         assert_eq!(refine(&["--refine", "1,2", "4", "--no-srm"]), [1.0, 2.0, 4.0]);
     }
 
-    fn slopes(args: &[&str]) -> Result<Option<Vec<String>>, clap::Error> {
+    fn slopes(args: &[&str]) -> Result<(Option<Vec<String>>, bool), clap::Error> {
         let argv = ["cdem", "reproduce"].iter().chain(args).copied();
         Ok(match Cli::try_parse_from(argv)?.command {
-            Command::Reproduce { published_slopes, .. } => published_slopes,
+            Command::Reproduce { published_slopes, skip_published_slopes, .. } => {
+                (published_slopes, skip_published_slopes)
+            }
             _ => unreachable!("a reproduce command"),
         })
     }
 
     #[test]
-    fn reproduce_takes_none_all_or_some_published_slopes_by_key() {
-        assert_eq!(slopes(&[]).unwrap(), None);
-        assert_eq!(slopes(&["--published-slopes"]).unwrap(), Some(Vec::new()));
-        assert_eq!(slopes(&["--published-slopes", "acads,at"]).unwrap(), Some(vec!["acads".into(), "at".into()]));
+    fn reproduce_takes_all_some_by_key_or_none_of_the_published_slopes() {
+        // Default: all five (None); some by key; none with the skip flag.
+        assert_eq!(slopes(&[]).unwrap(), (None, false));
+        assert!(slopes(&["--published-slopes"]).is_err(), "the keys are needed");
+        let some = slopes(&["--published-slopes", "acads,at"]).unwrap();
+        assert_eq!(some, (Some(vec!["acads".into(), "at".into()]), false));
+        assert_eq!(slopes(&["--skip-published-slopes"]).unwrap(), (None, true));
+        assert!(slopes(&["--skip-published-slopes", "--published-slopes", "at"]).is_err(), "one or the other");
         assert!(slopes(&["--published-slopes", "gl1"]).is_err(), "Griffiths & Lane's rows are cargo test's own");
         // Every key of the library's parses.
         for s in cdem::harness::suite::plastic::heavy_published_slopes() {
-            assert_eq!(slopes(&["--published-slopes", s.key]).unwrap(), Some(vec![s.key.to_string()]));
+            assert_eq!(slopes(&["--published-slopes", s.key]).unwrap(), (Some(vec![s.key.to_string()]), false));
         }
     }
 }
