@@ -301,7 +301,7 @@ array, SLURM_ARRAY_TASK_ID -> --shard I/N), then `cdem ensemble merge DIR... --o
 
 Exit codes: 0 done, 1 failed, 2 invalid input.";
 
-/// The keys `--published-slopes` takes: the library's heavy published slopes.
+/// The keys `--published-slopes` takes: the published slopes beside Griffiths & Lane's.
 fn published_slope_keys() -> clap::builder::PossibleValuesParser {
     clap::builder::PossibleValuesParser::new(cdem::harness::suite::plastic::heavy_published_slopes().map(|s| s.key))
 }

@@ -1724,8 +1724,8 @@ pub fn published_slope_ids(slope: &PublishedSlope) -> [String; 4] {
 }
 
 /// The six published slopes with plastic blocks on three element shapes
-/// (issue 24 item 4; `tests/plastic_slopes.rs`, about an hour on 2
-/// cores). Cheng #63's hexahedra and Cheng #61's three shapes are the
+/// (issue 24 item 4; `tests/plastic_slopes.rs` and `tests/plasticity.rs`:
+/// the 15 reductions beside Griffiths & Lane's about 12-14 minutes on 2 cores). Cheng #63's hexahedra and Cheng #61's three shapes are the
 /// refined meshes (references/plastic.md, "2026-12-04" and "Cheng #61: a
 /// skin band at the face").
 pub const PUBLISHED_SLOPES: [PublishedSlope; 6] = [

@@ -350,27 +350,17 @@ pub struct PublishedSlopeRun {
     pub bishop: f64,
 }
 
-impl PublishedSlopeRun {
-    /// Runs the three strength reductions and the LEM of `slope`.
-    pub fn run(
-        slope: &crate::harness::registry::PublishedSlope,
-        progress: &mut dyn FnMut(&str),
-    ) -> Result<Self, crate::error::Error> {
-        let input = crate::drivers::lem::load_lem_input(std::path::Path::new(slope.lem_input))?;
-        let bishop = crate::lem::analyse(&input)?.fs.bishop.as_ref().map_or(f64::NAN, |b| *b);
-        let (mut results, mut seconds) = (Vec::new(), Vec::new());
-        for scene in slope.scenes {
-            progress(&format!("{}: cdem srm {scene}", slope.name));
-            let t0 = std::time::Instant::now();
-            let loaded = crate::scene::Scene::load(std::path::Path::new(scene))?;
-            results.push(crate::drivers::run_srm(&loaded, &mut |_| {})?.0);
-            seconds.push(t0.elapsed().as_secs_f64());
-        }
-        Ok(Self { results, seconds, bishop })
-    }
+/// `cdem srm` on `scene`: its result and wall time (s).
+fn reduce(scene: &str) -> Result<(crate::drivers::SrmResult, f64), crate::error::Error> {
+    let t0 = std::time::Instant::now();
+    let loaded = crate::scene::Scene::load(std::path::Path::new(scene))?;
+    let result = crate::drivers::run_srm(&loaded, &mut |_| {})?.0;
+    Ok((result, t0.elapsed().as_secs_f64()))
+}
 
-    /// Runs `slopes` (each [`PublishedSlopeRun::run`]'s reductions and LEM)
-    /// on `workers` threads, each reduction alone on one thread (a rayon
+impl PublishedSlopeRun {
+    /// Runs `slopes` (each slope's three strength reductions, and our Bishop
+    /// on its LEM input) on `workers` threads, each reduction alone on one thread (a rayon
     /// pool of one: the results are bit for bit those of any thread count),
     /// the largest meshes first so that the longest reduction does not start
     /// last. The runs come back in the order of `slopes`; `progress` hears
@@ -420,16 +410,10 @@ impl PublishedSlopeRun {
                         }
                         let scene = slopes[i].scenes[k];
                         progress(&format!("{}: cdem srm {scene}", slopes[i].name));
-                        let t0 = std::time::Instant::now();
-                        let result = pool.install(|| {
-                            let loaded = crate::scene::Scene::load(path(scene))?;
-                            crate::drivers::run_srm(&loaded, &mut |_| {}).map(|r| r.0)
-                        });
-                        let seconds = t0.elapsed().as_secs_f64();
-                        match result {
+                        match pool.install(|| reduce(scene)) {
                             Ok(r) => {
                                 if let Ok(mut d) = done.lock() {
-                                    d[i][k] = Some((r, seconds));
+                                    d[i][k] = Some(r);
                                 }
                             }
                             Err(e) => {
@@ -507,8 +491,8 @@ impl PublishedSlopeRun {
     }
 }
 
-/// The rows of the five heavy published slopes (every one but Griffiths &
-/// Lane's), skipped with `reason`.
+/// The rows of the five published slopes beside Griffiths & Lane's, skipped
+/// with `reason`.
 pub fn published_slopes_skipped(reason: &str) -> Vec<crate::harness::report::Check> {
     heavy_published_slopes().flat_map(|s| published_slope_skipped(s, reason)).collect()
 }
@@ -522,8 +506,10 @@ pub fn published_slope_skipped(
     reg::published_slope_ids(slope).map(|id| reg::with_mesh_error(reg::row(&id).skipped(reason)))
 }
 
-/// The published slopes whose rows only `cdem reproduce --published-slopes`
-/// computes: all but Griffiths & Lane's (`cargo test`'s own rows).
+/// The published slopes that `tests/plastic_slopes.rs` and `cdem reproduce`
+/// run together ([`PublishedSlopeRun::run_all`]): all but Griffiths & Lane's,
+/// whose rows tests/plasticity.rs computes. (The name is from when they were
+/// too heavy for `cargo test`.)
 pub fn heavy_published_slopes() -> impl Iterator<Item = &'static crate::harness::registry::PublishedSlope> {
     crate::harness::registry::PUBLISHED_SLOPES.iter().filter(|s| s.key != "gl1")
 }
