@@ -160,8 +160,10 @@ pub struct RunoutSummary {
     pub mass_drop: f64,
     pub mass_travel: f64,
     pub travel_angle: f64,
-    /// The energy budget (J): gravity = kinetic + elastic + friction + joints + damping.
+    /// The energy budget (J): gravity + water = kinetic + elastic + friction + joints + damping.
     pub energy_gravity: f64,
+    /// Work of the pore water's forces (0 without `[water]`).
+    pub energy_water: f64,
     pub energy_kinetic: f64,
     pub energy_elastic: f64,
     pub energy_friction: f64,

@@ -46,6 +46,14 @@ fn a_launched_block_stops_after_v0_squared_over_2_mu_g() {
 }
 
 #[test]
+fn a_launched_block_under_water_stops_after_its_buoyant_weight_says() {
+    let (r, rows) = runout::submerged_rows().unwrap();
+    // Twice the dry distance: half the weight presses on the base.
+    assert!(r.x_at(r.track.last().unwrap().0) > 8.0, "more than four base faces");
+    assert_rows("runout_submerged", &rows);
+}
+
+#[test]
 fn a_dropped_block_lands_at_sqrt_2h_over_g_rebounds_and_comes_to_rest_when_damped() {
     let (r, _, rows) = runout::dropped_rows().unwrap();
     let t = r.first_contact.unwrap();
@@ -150,8 +158,11 @@ fn a_bad_runout_key_is_refused_naming_it() {
     assert!(err.contains("runout.duration"), "{err}");
     let scene = scene_with("at-rest", "[runout]\nduration = 1.0\ndampign = \"local\"\n");
     assert!(cdem::scene::Scene::load(&scene).is_err());
-    // Water's forces do not follow moving blocks: a runout with [water] is refused.
-    let scene = scene_with("at-rest", "[runout]\nduration = 1.0\n\n[water]\nsurface = [[-100.0, 1.0], [100.0, 1.0]]\n");
+    // A crack's water has no surface to follow once blocks move: refused, naming the key.
+    let scene = scene_with(
+        "at-rest",
+        "[runout]\nduration = 1.0\n\n[water]\n[[water.crack]]\ngroup = \"contact\"\nlevel = 0.5\n",
+    );
     let err = cdem::scene::Scene::load(&scene).unwrap_err().to_string();
-    assert!(err.contains("runout") && err.contains("[water]"), "{err}");
+    assert!(err.contains("water.crack[0]") && err.contains("runout"), "{err}");
 }

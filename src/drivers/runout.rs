@@ -31,6 +31,7 @@ pub struct RunoutRow {
     pub contacts: usize,
     pub sliding_contacts: usize,
     pub gravity_work: f64,
+    pub water_work: f64,
     pub friction_work: f64,
     pub damping_work: f64,
 }
@@ -140,6 +141,7 @@ pub fn run(section: &RunoutSection, model: &Model, state: &State, end: EndState)
                 contacts: r.contacts,
                 sliding_contacts: r.sliding,
                 gravity_work: r.energy.gravity,
+                water_work: r.energy.water,
                 friction_work: r.energy.friction,
                 damping_work: r.energy.damping,
             });
@@ -189,6 +191,7 @@ pub fn run(section: &RunoutSection, model: &Model, state: &State, end: EndState)
         mass_travel,
         travel_angle: if mass_travel > 0.0 { mass_drop.atan2(mass_travel).to_degrees() } else { 0.0 },
         energy_gravity: e.gravity,
+        energy_water: e.water,
         energy_kinetic: e.kinetic,
         energy_elastic: e.elastic,
         energy_friction: e.friction,

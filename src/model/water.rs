@@ -43,6 +43,13 @@ pub struct WaterModel {
     /// impermeable block). What a plastic block yields on.
     #[serde(skip)]
     pub element_pressure: Vec<f64>,
+    /// Per node copy: the vector area its water force acts on (m^2), so that
+    /// its force is `-u a` with `u` the pressure at the node: `A n` of each
+    /// spring at node `a` (`-A n` at node `b`) plus the outer faces' corner
+    /// shares `A n_out`. The runout turns it with the node's block and takes
+    /// `u` where the node is now (`solver::runout`).
+    #[serde(skip)]
+    pub node_area: Vec<[f64; 3]>,
     /// Resultant of the water forces (N).
     pub resultant: [f64; 3],
 }
@@ -141,6 +148,7 @@ pub(super) fn water_forces(
     }
 
     let mut f = vec![0.0; 3 * x0.len()];
+    let mut node_area = vec![[0.0; 3]; x0.len()];
     let mut spring_pressure = Vec::with_capacity(springs.len());
     for s in 0..springs.len() {
         let p = x0[springs.a[s] as usize];
@@ -153,6 +161,8 @@ pub(super) fn water_forces(
         for d in 0..3 {
             f[3 * a + d] -= u * area * n[d];
             f[3 * b + d] += u * area * n[d];
+            node_area[a][d] += area * n[d];
+            node_area[b][d] -= area * n[d];
         }
     }
     for &(c, face) in &adj.exterior {
@@ -163,6 +173,7 @@ pub(super) fn water_forces(
             let i = node_of(c, nodes[k]) as usize;
             for d in 0..3 {
                 f[3 * i + d] -= u * area * n[d];
+                node_area[i][d] += area * n[d];
             }
         }
     }
@@ -177,6 +188,7 @@ pub(super) fn water_forces(
         spring_pressure,
         node_pressure,
         element_pressure,
+        node_area,
         resultant,
     };
     Ok((f, model))

@@ -143,13 +143,16 @@ pub(super) fn validate(s: &Scene) -> Result<(), SceneError> {
     }
     if let Some(r) = &s.runout {
         r.validate()?;
-        // The water's forces are fixed on the nodes where the static phases
-        // put them: a block that leaves the slope would keep its push
-        // (references/runout.md, "Wulong after rain run out").
-        if s.water.is_some() {
+        // The runout's water follows the blocks by the phreatic surface's
+        // pressure where each node is now (solver::runout); a crack's water
+        // has no surface to follow (references/runout.md).
+        if let Some(w) = s.water.as_ref().filter(|w| !w.crack.is_empty()) {
             return Err(SceneError::invalid(
-                "runout",
-                "a runout with [water] is not supported: the pore pressures would stay on the blocks where phase 1 put them, so a block that leaves the slope would keep its push; run the runout without [water]",
+                "water.crack[0]",
+                format!(
+                    "{:?}: a runout with water-filled cracks is not supported (their water has no surface to follow once the blocks move); give the water as a phreatic surface",
+                    w.crack[0].group
+                ),
             ));
         }
     }

@@ -76,6 +76,21 @@ pub fn block_acceleration(theta_deg: f64, phi_deg: f64, g: f64) -> f64 {
     g * (th.sin() - th.cos() * phi.tan())
 }
 
+/// The blocks' density (kg/m^3, every `verification/runout/*.toml`) and the
+/// water's, for the submerged launched block.
+pub const RUNOUT_ROCK_DENSITY: f64 = 2000.0;
+pub const RUNOUT_WATER_DENSITY: f64 = 1000.0;
+/// The submerged block's water table (m): 8 m above the block's top (z = 2).
+pub const RUNOUT_WATER_LEVEL: f64 = 10.0;
+
+/// The submerged launched block's stopping distance: its weight less its
+/// buoyancy (Archimedes) presses it on the base, `v0^2 / (2 tan(phi) g (1 -
+/// rho_w / rho))` (m); the water's push on its faces is level, so it neither
+/// drives nor brakes it.
+pub fn submerged_launch_distance(v0: f64, phi_deg: f64, g: f64) -> f64 {
+    launch_distance(v0, phi_deg, g) / (1.0 - RUNOUT_WATER_DENSITY / RUNOUT_ROCK_DENSITY)
+}
+
 /// The launched block's stopping distance `v0^2 / (2 tan(phi) g)` (m).
 pub fn launch_distance(v0: f64, phi_deg: f64, g: f64) -> f64 {
     v0 * v0 / (2.0 * phi_deg.to_radians().tan() * g)
@@ -131,6 +146,8 @@ pub const RUNOUT_ROWS: &[RowSpec] = &[
     spec("runout/3dec-toppling", "3DEC toppling block, 10 x 25 m, dip 40, phi 40", "topples: rotation past 30 deg within 4 s", Compared(true), RUNOUT_MD, "tests/runout.rs"),
     spec("runout/3dec-toppling-angle", "3DEC toppling block, 10 x 25 m, dip 40, phi 40", "rotation at 2 s (deg; no published value: reported)", Reported(Goal::AtLeast), RUNOUT_MD, "tests/runout.rs"),
     spec("runout/launched-stop", "block launched at 7 m/s on a level plane, phi 30", "stopping distance (m)", Asserted(TOL_RUNOUT_STOP), RUNOUT_MD, "tests/runout.rs"),
+    spec("runout/launched-submerged-stop", "block launched at 7 m/s on a level plane under 8 m of water, phi 30", "stopping distance (m), buoyancy by the water following the block", Asserted(TOL_RUNOUT_STOP), RUNOUT_MD, "tests/runout.rs"),
+    spec("runout/energy-launched-submerged", "block launched at 7 m/s on a level plane under 8 m of water, phi 30", "energy budget: |residual| / kinetic energy at launch", Asserted(TOL_RUNOUT_ENERGY), RUNOUT_MD, "tests/runout.rs").with_reference(0.0),
     spec("runout/dropped-contact-time", "block dropped 1 m, no damping", "time of first contact (s), to the time step", Asserted(TOL_RUNOUT_STOP), RUNOUT_MD, "tests/runout.rs"),
     spec("runout/dropped-rebound", "block dropped 1 m, no damping, soft contact 1e8 Pa/m", "rebound height (m)", Asserted(TOL_RUNOUT_REBOUND), RUNOUT_MD, "tests/runout.rs").with_reference(RUNOUT_DROP_HEIGHT),
     spec("runout/dropped-rest", "block dropped 1 m, local damping 0.8", "comes to rest: speed below 1 mm/s within 3 s", Compared(true), RUNOUT_MD, "tests/runout.rs"),

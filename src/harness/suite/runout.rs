@@ -100,6 +100,9 @@ pub struct Setup {
     pub spin: f64,
     /// The stiffness of contacts between blocks that never shared a face (Pa/m).
     pub contact_stiffness: f64,
+    /// A level water table at this height (m), `gamma_w = rho_w g` with the
+    /// case's g (references/runout.md): the block under water.
+    pub water_level: Option<f64>,
 }
 
 impl Setup {
@@ -113,6 +116,7 @@ impl Setup {
             gravity: true,
             spin: 0.0,
             contact_stiffness: reg::RUNOUT_CONTACT_STIFFNESS,
+            water_level: None,
         }
     }
 }
@@ -145,6 +149,13 @@ pub fn model(case: &Case, setup: &Setup) -> Result<(Model, Vec<usize>), Error> {
         true => [G * th.sin(), 0.0, -G * th.cos()],
         false => [0.0; 3],
     };
+    if let Some(z) = setup.water_level {
+        scene.water = Some(crate::model::spec::WaterSection {
+            surface: vec![[-1e3, z], [1e3, z]],
+            unit_weight: reg::RUNOUT_WATER_DENSITY * G,
+            ..Default::default()
+        });
+    }
     let block_material = scene.material.iter().position(|m| m.group == "block").unwrap_or(1);
     let model = crate::drivers::build_model(&scene)?;
     let block = (0..model.elements.len()).filter(|&e| model.elements.material[e] as usize == block_material).collect();
@@ -326,6 +337,23 @@ pub fn launched_rows() -> Result<(BlockRun, Vec<Check>), Error> {
     Ok((r, rows))
 }
 
+/// Rows `runout/launched-submerged-stop` and its energy: the launched block
+/// under water, its pore water following it (buoyancy: Archimedes).
+pub fn submerged_rows() -> Result<(BlockRun, Vec<Check>), Error> {
+    let v0 = reg::RUNOUT_LAUNCH_SPEED;
+    let phi = reg::RUNOUT_LAUNCH_PHI_DEG;
+    let buoyant = 1.0 - reg::RUNOUT_WATER_DENSITY / reg::RUNOUT_ROCK_DENSITY;
+    let stop = v0 / (phi.to_radians().tan() * G * buoyant);
+    let setup = Setup { v0: [v0, 0.0, 0.0], water_level: Some(reg::RUNOUT_WATER_LEVEL), ..Setup::new(0.0, stop + 0.4) };
+    let r = run(&reg::RUNOUT_LAUNCHED, &setup, phi)?;
+    let d = r.x_at(setup.duration);
+    let rows = vec![
+        reg::row("runout/launched-submerged-stop").value(d, reg::submerged_launch_distance(v0, phi, G), r.seconds),
+        energy_row("runout/energy-launched-submerged", &r),
+    ];
+    Ok((r, rows))
+}
+
 /// Rows `runout/dropped-*` and its energy: a block dropped 1 m, undamped and
 /// with local damping.
 pub fn dropped_rows() -> Result<(BlockRun, BlockRun, Vec<Check>), Error> {
@@ -450,8 +478,9 @@ pub fn determinism_row() -> Result<Check, Error> {
 
 fn energy_row(id: &str, r: &BlockRun) -> Check {
     reg::row(id).value(r.closure, 0.0, r.seconds).with_note(format!(
-        "gravity {:.4e} J = kinetic {:.4e} + elastic {:.4e} + friction {:.4e} + joints {:.4e} + damping {:.4e} (residual {:.3e} J)",
+        "gravity {:.4e} J + water {:.4e} = kinetic {:.4e} + elastic {:.4e} + friction {:.4e} + joints {:.4e} + damping {:.4e} (residual {:.3e} J)",
         r.energy.gravity,
+        r.energy.water,
         r.energy.kinetic,
         r.energy.elastic,
         r.energy.friction,
@@ -467,6 +496,7 @@ pub fn rows() -> Result<Vec<Check>, Error> {
     out.push(at_rest_row()?.1);
     out.extend(toppling_rows()?.1);
     out.extend(launched_rows()?.1);
+    out.extend(submerged_rows()?.1);
     out.extend(dropped_rows()?.2);
     out.push(objectivity_row()?.1);
     out.extend(slope_rows()?.1);

@@ -93,12 +93,16 @@ pub struct RunoutParams {
 }
 
 /// The energy terms of a runout since its start (J). The budget:
-/// `gravity = kinetic + elastic + friction + joints + damping`, each term
+/// `gravity + water = kinetic + elastic + friction + joints + damping`, each term
 /// computed on its own (none as the remainder).
 #[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
 pub struct Energy {
-    /// Work of the external loads, `f_ext . (u - u_0)`.
+    /// Work of the external loads but the water, `f_ext . (u - u_0)`.
     pub gravity: f64,
+    /// Work of the pore water's forces, which follow the blocks (their
+    /// pressure where each node is now, their area turned with its block):
+    /// not a potential, so summed step by step (trapezoid). 0 without water.
+    pub water: f64,
     /// `sum m v^2 / 2` at the step (central-difference velocity), less the start's.
     pub kinetic: f64,
     /// Strain energy of the blocks, the bonded springs and the contacts, less the start's.
@@ -112,9 +116,9 @@ pub struct Energy {
 }
 
 impl Energy {
-    /// `gravity - (kinetic + elastic + friction + joints + damping)`.
+    /// `gravity + water - (kinetic + elastic + friction + joints + damping)`.
     pub fn residual(&self) -> f64 {
-        self.gravity - (self.kinetic + self.elastic + self.friction + self.joints + self.damping)
+        self.gravity + self.water - (self.kinetic + self.elastic + self.friction + self.joints + self.damping)
     }
     /// `|residual| / |gravity|` (0 if no work was done).
     pub fn closure(&self) -> f64 {
@@ -165,6 +169,61 @@ struct Candidate {
     vertex_elem: u32,
     face_elem: u32,
     tris: std::ops::Range<usize>,
+}
+
+/// Pore water in a runout (docs/method.md 2.13): the joint water of the
+/// static phases ([`crate::model::water`]), whose forces `-u a` at each node
+/// copy are fixed there, made to follow the blocks: `u` is the phreatic
+/// surface's pressure where the node is now and its vector area `a` turns
+/// with the node's block. At the start it is the static phases' force; a
+/// block that leaves the water table loses it, one that goes under gains it.
+struct RunoutWater {
+    surface: crate::physics::water::Phreatic,
+    area: Vec<[f64; 3]>,
+    /// The external forces less the static water forces: gravity and loads.
+    f_dry: Vec<f64>,
+    /// The water's force at the last step (N, `3 i + d`), empty before the first.
+    force: Vec<f64>,
+}
+
+impl RunoutWater {
+    fn new(model: &Model) -> Option<Self> {
+        let w = model.water.as_ref()?;
+        let surface = w.surface.clone()?;
+        let mut f_dry = model.f_ext.clone();
+        for (i, a) in w.node_area.iter().enumerate() {
+            let u = surface.pressure(model.x0[i][0], model.x0[i][2]);
+            for d in 0..3 {
+                f_dry[3 * i + d] += u * a[d];
+            }
+        }
+        Some(Self { surface, area: w.node_area.clone(), f_dry, force: Vec::new() })
+    }
+
+    /// The water's force at positions `x`, each node's area turned by
+    /// `rotation(i)`; returns its work since the last call (trapezoid).
+    fn update(&mut self, x: &[[f64; 3]], x_prev: &[[f64; 3]], rotation: impl Fn(usize) -> Mat3) -> f64 {
+        let mut force = vec![0.0; 3 * x.len()];
+        for (i, p) in x.iter().enumerate() {
+            let u = self.surface.pressure(p[0], p[2]);
+            if u > 0.0 {
+                let a = rotate(&rotation(i), self.area[i]);
+                for d in 0..3 {
+                    force[3 * i + d] = -u * a[d];
+                }
+            }
+        }
+        let mut work = 0.0;
+        if !self.force.is_empty() && !x_prev.is_empty() {
+            for (i, (p, q)) in x.iter().zip(x_prev).enumerate() {
+                for d in 0..3 {
+                    work += 0.5 * (self.force[3 * i + d] + force[3 * i + d]) * (p[d] - q[d]);
+                }
+            }
+        }
+        self.force = force;
+        work
+    }
 }
 
 /// The runout engine: what is built once, and the scratch of a step.
@@ -227,6 +286,8 @@ pub struct Runout {
     fixed_elem: Vec<bool>,
     /// Per element: the contact stiffness limit (Pa/m), empty for none.
     contact_limit: Vec<f64>,
+    /// The pore water, if the model has a phreatic surface.
+    water: Option<RunoutWater>,
     pub remaps: usize,
     /// Wall time spent in each stage of [`Runout::step`] so far (s), in the
     /// order of [`STAGES`]: what a profile of the runout reads first.
@@ -371,6 +432,7 @@ impl Runout {
             u0: Vec::new(),
             fixed_elem,
             contact_limit,
+            water: RunoutWater::new(model),
             remaps: 0,
             stage_seconds: [0.0; 6],
         };
@@ -888,7 +950,15 @@ impl Runout {
         self.history = history;
 
         lap(4, &mut self.stage_seconds);
-        // 4. Update: damping and central differences.
+        // 4. Update: the water's forces where the blocks are now, damping and
+        // central differences.
+        let (rotations, node_elems) = (&self.rotations, &self.node_elems);
+        let water_work = match &mut self.water {
+            Some(w) => w.update(&x, &self.x_prev, |i| rotations[node_elems[i].first().map_or(0, |e| e.0 as usize)]),
+            None => 0.0,
+        };
+        let f_dry = self.water.as_ref().map_or(&model.f_ext, |w| &w.f_dry);
+        let f_water = self.water.as_ref().map(|w| &w.force);
         let mut damping_work = 0.0;
         let mut kinetic = 0.0;
         let mut max_speed: f64 = 0.0;
@@ -900,7 +970,7 @@ impl Runout {
                     st.v[k] = 0.0;
                     continue;
                 }
-                let f = model.f_ext[k] - f_int[k];
+                let f = f_dry[k] + f_water.map_or(0.0, |w| w[k]) - f_int[k];
                 let v_old = st.v[k];
                 let fd = match self.params.damping {
                     RunoutDamping::None => 0.0,
@@ -929,7 +999,9 @@ impl Runout {
         self.energy.damping += damping_work;
         self.energy.friction += friction;
         // Gravity's work up to x_n: f_ext . (u_n - u_0); u_n is before this step's update.
-        self.energy.gravity = (0..3 * n).map(|k| model.f_ext[k] * (st.u[k] - dt * st.v[k] - self.u0[k])).sum();
+        let f_dry = self.water.as_ref().map_or(&model.f_ext, |w| &w.f_dry);
+        self.energy.gravity = (0..3 * n).map(|k| f_dry[k] * (st.u[k] - dt * st.v[k] - self.u0[k])).sum();
+        self.energy.water += water_work;
         self.energy.kinetic = kinetic - self.kinetic0;
         self.energy.elastic = elastic - elastic0;
         let spring_e0 = *self.spring_e0.get_or_insert(spring_energy);

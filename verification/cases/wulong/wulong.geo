@@ -58,6 +58,12 @@ pz[] = {z0, zt, zc, zc + 200 * bz};
 N = 28;                      // steep joints i = 0..N
 kb = -4;                     // lowest bedding plane of the jointed zone
 D = 8;                       // near-surface band (m)
+// `apron` (m, default 0): the platform (the toe road) extended this far beyond the model's
+// left side at x = 0, to x = -apron, for the runout (verification/runout/wulong-apron.geo):
+// ground for the blocks that leave the slope to land on. 0 gives the paper case's mesh.
+If (!Exists(apron))
+  apron = 0;
+EndIf
 lcs = 3; lcf = 6;            // mesh sizes: jointed zone, frame corners
 
 // 3. The ground row kg[i] of every steep joint: the nearest bedding plane to where
@@ -186,10 +192,10 @@ For i In {0:N - 1}
 EndFor
 
 // 6. The frame: platform, base and far side around the jointed zone, meshed freely.
-f1 = newp; Point(f1) = {0, 0, 0, lcf};
+f1 = newp; Point(f1) = {-apron, 0, 0, lcf};
 f2 = newp; Point(f2) = {L, 0, 0, lcf};
 f3 = newp; Point(f3) = {L, 0, zR, lcf};
-f4 = newp; Point(f4) = {0, 0, z0, lcf};
+f4 = newp; Point(f4) = {-apron, 0, z0, lcf};
 l1 = newl; Line(l1) = {f1, f2};
 l2 = newl; Line(l2) = {f2, f3};
 l3 = newl; Line(l3) = {f3, pt[N * NK + kg[N] - kb]};
@@ -263,8 +269,8 @@ Physical Volume("nearsurface") = {nsv[]};
 Physical Surface("nearsurface_joints") = {nsj[]};
 Physical Surface("interior_joints") = {ij[]};
 e = 1e-6;
-Physical Surface("bottom") = Surface In BoundingBox{-e, -e, -e, L + e, W + e, e};
-Physical Surface("left") = Surface In BoundingBox{-e, -e, -e, e, W + e, z0 + e};
+Physical Surface("bottom") = Surface In BoundingBox{-apron - e, -e, -e, L + e, W + e, e};
+Physical Surface("left") = Surface In BoundingBox{-apron - e, -e, -e, -apron + e, W + e, z0 + e};
 Physical Surface("right") = Surface In BoundingBox{L - e, -e, -e, L + e, W + e, zR + e};
-Physical Surface("front") = Surface In BoundingBox{-e, -e, -e, L + e, e, 2 * zR};
-Physical Surface("back") = Surface In BoundingBox{-e, W - e, -e, L + e, W + e, 2 * zR};
+Physical Surface("front") = Surface In BoundingBox{-apron - e, -e, -e, L + e, e, 2 * zR};
+Physical Surface("back") = Surface In BoundingBox{-apron - e, W - e, -e, L + e, W + e, 2 * zR};
