@@ -24,6 +24,34 @@ pub enum Error {
     /// report lists them): a program whose checks fail exits non-zero.
     #[error("{count} validation rows fail (listed in {report}), the first: {first}")]
     Validation { count: usize, report: PathBuf, first: String },
+    /// A checkpoint that cannot be resumed from: refused, never used.
+    #[error("checkpoint {path}: {source}")]
+    Checkpoint { path: PathBuf, source: CheckpointError },
+    /// The run stopped on a signal after writing its checkpoint (the CLI's
+    /// exit code 128 + the signal: 130 for SIGINT, 143 for SIGTERM).
+    #[error("stopped by signal {signal} ({name}); checkpoint written to {checkpoint}: continue with --resume")]
+    Interrupted { signal: i32, name: &'static str, checkpoint: PathBuf },
+}
+
+/// Why a checkpoint file is refused.
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum CheckpointError {
+    #[error("not a cdem checkpoint (its first bytes are not the checkpoint magic)")]
+    NotACheckpoint,
+    #[error("format version {found}, this binary reads version {expected}")]
+    Version { found: u32, expected: u32 },
+    #[error("a checkpoint of `cdem {found}`, not of `cdem {expected}`")]
+    Command { found: String, expected: String },
+    #[error("truncated: {found} bytes, its header says {expected}")]
+    Truncated { found: u64, expected: u64 },
+    #[error("corrupt: its checksum is {found:016x}, its bytes give {computed:016x}")]
+    Corrupt { found: u64, computed: u64 },
+    #[error("belongs to another scene or mesh (digest {found:016x}, this scene and mesh give {expected:016x})")]
+    Foreign { found: u64, expected: u64 },
+    #[error("its elastic state differs from this binary's phase 1 of the same scene (digest {found:016x} vs {computed:016x}): written by another build or machine")]
+    ElasticState { found: u64, computed: u64 },
+    #[error("unreadable content at byte {offset} of its payload: {reason}")]
+    Content { offset: usize, reason: String },
 }
 
 impl Error {
@@ -99,7 +127,10 @@ impl Error {
     /// Whether the error is in the input (scene, mesh, or what the model
     /// makes of them) rather than in the run: the CLI's exit code 2.
     pub fn is_input(&self) -> bool {
-        matches!(self, Error::Mesh(_) | Error::MeshFile { .. } | Error::Scene(_) | Error::Model(_))
+        matches!(
+            self,
+            Error::Mesh(_) | Error::MeshFile { .. } | Error::Scene(_) | Error::Model(_) | Error::Checkpoint { .. }
+        )
     }
 }
 

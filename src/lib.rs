@@ -37,10 +37,11 @@
 
 // The layers, bottom up; a module imports only from layers below its own
 // (tests/layering.rs checks it):
-//   error, summary -> mesh, geometry -> physics -> model -> solver | fem | lem | analysis
+//   error, summary, atomic -> mesh, geometry -> physics -> model -> solver | fem | lem | analysis
 //   -> scene -> drivers -> output (its figures with feature `plot`) -> app
 //   (feature `plot`: one function per product command) -> harness (feature
 //   `harness`: verification only) -> the CLI.
+pub mod atomic;
 pub mod error;
 pub mod simd;
 pub mod summary;

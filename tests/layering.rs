@@ -3,7 +3,7 @@
 //!
 //! | layer | modules |
 //! |---|---|
-//! | 0 | `error`, `summary` (vocabulary every layer shares), `simd` (the kernels' instruction set) |
+//! | 0 | `error`, `summary` (vocabulary every layer shares), `simd` (the kernels' instruction set), `atomic` (files written whole or not at all) |
 //! | 1 | `mesh`, `geometry` (the one circle type) |
 //! | 2 | `physics` |
 //! | 3 | `model` |
@@ -23,7 +23,8 @@
 
 use std::path::{Path, PathBuf};
 
-const LAYERS: [(&str, u32); 16] = [
+const LAYERS: [(&str, u32); 17] = [
+    ("atomic", 0),
     ("error", 0),
     ("simd", 0),
     ("summary", 0),

@@ -98,8 +98,7 @@ pub fn kinematics(path: &Path, out: &Path) -> crate::Result<Kinematics> {
     let table = table(face, &sets, &singles, &pairs);
     std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
     let md = out.join("kinematics.md");
-    std::fs::write(&md, format!("# Kinematic analysis of {}\n\n{table}", path.display()))
-        .map_err(|e| Error::io(&md, e))?;
+    crate::output::write_atomic(&md, format!("# Kinematic analysis of {}\n\n{table}", path.display()).as_bytes())?;
     let labelled: Vec<(String, Orientation)> =
         sets.iter().enumerate().map(|(i, s)| (format!("set{}", i + 1), s.orientation)).collect();
     // The figure's friction circle and cone: the largest friction angle of

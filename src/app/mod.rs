@@ -10,6 +10,7 @@ pub mod kinematics;
 
 use std::path::{Path, PathBuf};
 
+use crate::drivers::checkpoint::Checkpointing;
 use crate::drivers::{FemRun, RunResult, SrmProgress, SrmResult};
 use crate::lem::LemResult;
 use crate::output::figures;
@@ -76,12 +77,32 @@ fn write_run(scene: &Scene, result: &RunResult, out: &Path) -> crate::Result<()>
 
 /// `cdem srm SCENE --out DIR`: strength reduction; writes `srm.json`,
 /// `mechanism.vtu`, `mechanism.png` and, with plastic blocks, `slip-band.png`.
-pub fn srm(scene_path: &Path, out: &Path, progress: &mut dyn FnMut(SrmProgress)) -> crate::Result<SrmResult> {
+///
+/// With `ck` the search checkpoints into `ck.dir` and, with `ck.resume`,
+/// goes on from the checkpoint there ([`crate::drivers::srm::run_srm_checkpointed`]);
+/// the checkpoint is removed once every file is written.
+pub fn srm(
+    scene_path: &Path,
+    out: &Path,
+    ck: Option<&Checkpointing>,
+    progress: &mut dyn FnMut(SrmProgress),
+) -> crate::Result<SrmResult> {
     let scene = Scene::load(scene_path)?;
-    let (result, model) = crate::drivers::run_srm(&scene, progress)?;
+    // What a killed run was writing when it died (never read: every file
+    // is moved into place whole).
+    for dir in ck.iter().flat_map(|c| [Some(&c.dir), c.resume.as_ref()]).flatten() {
+        crate::atomic::remove_stale_partials(dir);
+    }
+    let (result, model) = match ck {
+        Some(ck) => crate::drivers::srm::run_srm_checkpointed(&scene, ck, progress)?,
+        None => crate::drivers::run_srm(&scene, progress)?,
+    };
     crate::output::write_srm(&result, &model, out)?;
     figures::mechanism::mechanism_png(&result, &model, &out.join("mechanism.png"))?;
     figures::mechanism::slip_band_png(&result, &model, &out.join("slip-band.png"))?;
+    if let Some(ck) = ck {
+        ck.remove();
+    }
     Ok(result)
 }
 

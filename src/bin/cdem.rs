@@ -59,6 +59,18 @@ enum Command {
         /// (unsafe side)" and writes srm.json's `discretisation` and DIR/mesh-check/.
         #[arg(long, value_delimiter = ',', num_args = 0.., default_missing_value = "2", value_name = "R")]
         mesh_check: Option<Vec<f64>>,
+        /// Write a checkpoint, DIR/checkpoint.cdem (the bracket, the finished trials, the warm start's
+        /// state), at the end of a trial once this many seconds of wall time have passed since the last
+        /// (0: after every trial), and on SIGINT/SIGTERM (then exit 130/143). Removed once the files are
+        /// written.
+        #[arg(long, value_name = "SECONDS", default_value_t = cdem::drivers::checkpoint::DEFAULT_EVERY_S, conflicts_with = "mesh_check")]
+        checkpoint_every: f64,
+        /// Go on from the checkpoint in DIR (usually the --out of the run that stopped; none there:
+        /// start from the beginning). The files are byte-identical to a run never stopped (srm.json's
+        /// wall times aside). A checkpoint of another scene, mesh, format version, or a truncated or
+        /// corrupt one is refused (exit 2).
+        #[arg(long, value_name = "DIR", conflicts_with = "mesh_check")]
+        resume: Option<PathBuf>,
     },
     /// Regenerate a case's .msh from its .geo with gmsh (gmsh must be on PATH); or, given a
     /// geometry file (.toml: a slope and its [[joint_set]]s), write DIR/NAME.geo, .msh and a
@@ -228,8 +240,10 @@ impl Stages {
 const EXIT_CODES: &str = "Exit codes:
   0  the run reached what it was asked for (equilibrium; with [failure], a phase-2 end state)
   1  the run failed (non-finite state, instability, a file that cannot be written)
-  2  invalid input: the scene, the mesh, or what the model makes of them (the message names the place)
-  3  the step budget ran out: outputs are written, summary.json says end_state \"Undecided\"";
+  2  invalid input: the scene, the mesh, or what the model makes of them (the message names the place),
+     or a checkpoint refused by --resume (another scene or mesh, format version, truncated, corrupt)
+  3  the step budget ran out: outputs are written, summary.json says end_state \"Undecided\"
+  130, 143  stopped by SIGINT, SIGTERM after writing a checkpoint (cdem srm; continue with --resume)";
 
 #[derive(Args)]
 #[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
@@ -250,6 +264,11 @@ struct EnsembleArgs {
     /// Run shard I of N (0-based): members [I M / N, (I + 1) M / N); merge the shards after.
     #[arg(long, value_parser = parse_shard)]
     shard: Option<(usize, usize)>,
+    /// Go on from the members already in DIR's journal (members.jsonl or members-I-of-N.jsonl,
+    /// appended as each batch ends): they are not run again; a torn last line is dropped (and said
+    /// so). The files are byte-identical to a run never stopped.
+    #[arg(long)]
+    resume: bool,
 }
 
 #[derive(Subcommand)]
@@ -331,7 +350,10 @@ fn command(cli: Cli) -> ExitCode {
     let result = match cli.command {
         Command::Run { scene, out, mesh_check } => run(&scene, &out, mesh_check.as_deref()),
         Command::Fem { scene, out, mesh_check } => fem(&scene, &out, mesh_check.as_deref()),
-        Command::Srm { scene, out, mesh_check } => srm(&scene, &out, mesh_check.as_deref()),
+        Command::Srm { scene, out, mesh_check, checkpoint_every, resume } => {
+            let ck = mesh_check.is_none().then(|| checkpointing(&out, checkpoint_every, resume.as_deref()));
+            srm(&scene, &out, mesh_check.as_deref(), ck.as_ref())
+        }
         Command::Mesh { geo, out } if geo.extension().is_some_and(|e| e == "toml") => {
             let dir = out.unwrap_or_else(|| geo.parent().map(PathBuf::from).unwrap_or_default());
             reached(cdem::scene::joint_sets::mesh_geometry(&geo, &dir).map(|m| {
@@ -388,11 +410,27 @@ fn command(cli: Cli) -> ExitCode {
     match result {
         Ok(Outcome::Reached) => ExitCode::SUCCESS,
         Ok(Outcome::OutOfSteps) => ExitCode::from(3),
+        Err(cdem::Error::Interrupted { signal, name, checkpoint }) => {
+            eprintln!("stopped by {name}: checkpoint {} (continue with --resume)", checkpoint.display());
+            ExitCode::from(128 + signal as u8)
+        }
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::from(if e.is_input() { 2 } else { 1 })
         }
     }
+}
+
+/// Checkpoints into `out`, resumed from `resume`; SIGINT and SIGTERM set
+/// the stop flag the command checks at every step.
+fn checkpointing(out: &Path, every_s: f64, resume: Option<&Path>) -> cdem::drivers::checkpoint::Checkpointing {
+    let ck = cdem::drivers::checkpoint::Checkpointing::new(out, every_s, resume);
+    for sig in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
+        if let Err(e) = signal_hook::flag::register_usize(sig, ck.stop.clone(), sig as usize) {
+            eprintln!("warning: signal {sig} not caught ({e}): it stops the run without a checkpoint");
+        }
+    }
+    ck
 }
 
 /// `cdem run`: phase 1 and, for a scene with `[failure]`, phase 2.
@@ -510,6 +548,7 @@ fn ensemble(args: EnsembleArgs) -> cdem::Result<()> {
                 members: args.members,
                 seed: args.seed,
                 shard: args.shard.unwrap_or((0, 1)),
+                resume: args.resume,
             };
             let pb = ProgressBar::new(0);
             pb.set_style(
@@ -521,8 +560,20 @@ fn ensemble(args: EnsembleArgs) -> cdem::Result<()> {
                 pb.set_position(done as u64);
             })?;
             pb.finish_and_clear();
+            let resumed = match &outcome {
+                ens::Outcome::Shard { resumed, .. } | ens::Outcome::Whole { resumed, .. } => *resumed,
+            };
+            if args.resume {
+                eprintln!("resumed: {} members from the journal, not run again", resumed.members);
+            }
+            if resumed.torn_bytes > 0 {
+                eprintln!(
+                    "resumed: dropped a torn last line of the journal ({} bytes: a record cut by the kill), run again",
+                    resumed.torn_bytes
+                );
+            }
             match outcome {
-                ens::Outcome::Shard { info } => {
+                ens::Outcome::Shard { info, .. } => {
                     println!(
                         "shard {}/{}: members {}..{} of {} ({:.1} s) -> {}",
                         info.shard[0],
@@ -535,7 +586,7 @@ fn ensemble(args: EnsembleArgs) -> cdem::Result<()> {
                     );
                     return Ok(());
                 }
-                ens::Outcome::Whole { summary } => (*summary, args.out),
+                ens::Outcome::Whole { summary, .. } => (*summary, args.out),
             }
         }
         (None, None) => unreachable!("clap requires INPUT without a subcommand"),
@@ -548,7 +599,12 @@ fn ensemble(args: EnsembleArgs) -> cdem::Result<()> {
 
 /// `cdem srm`: strength reduction (with `mesh_check`, on the refined meshes
 /// too); progress per trial on the terminal.
-fn srm(scene_path: &Path, out: &Path, mesh_check: Option<&[f64]>) -> cdem::Result<Outcome> {
+fn srm(
+    scene_path: &Path,
+    out: &Path,
+    mesh_check: Option<&[f64]>,
+    ck: Option<&cdem::drivers::checkpoint::Checkpointing>,
+) -> cdem::Result<Outcome> {
     use cdem::drivers::mesh_check::CheckProgress;
     use cdem::drivers::SrmProgress;
     let pb = progress_bar(0);
@@ -560,6 +616,7 @@ fn srm(scene_path: &Path, out: &Path, mesh_check: Option<&[f64]>) -> cdem::Resul
             pb.tick();
             let _ = ratio;
         }
+        SrmProgress::Resumed(n) => pb.suspend(|| eprintln!("resumed from the checkpoint: {n} trials done")),
         SrmProgress::TrialEnd(t) => pb.suspend(|| {
             eprintln!(
                 "F = {:.4}: {:?}{} after {} steps, max displacement {:.3e} m, {} failed springs, {:.3e} m^3 yielded \
@@ -576,7 +633,7 @@ fn srm(scene_path: &Path, out: &Path, mesh_check: Option<&[f64]>) -> cdem::Resul
         }),
     };
     let result = match mesh_check {
-        None => cdem::app::srm(scene_path, out, &mut on_srm)?,
+        None => cdem::app::srm(scene_path, out, ck, &mut on_srm)?,
         Some(refine) => {
             let refine = if refine.is_empty() { &cdem::drivers::mesh_check::DEFAULT_REFINE[..] } else { refine };
             cdem::app::srm_mesh_check(scene_path, refine, out, &mut |p| match p {

@@ -120,7 +120,8 @@ fn refined_mesh(scene: &Scene, geo: Option<&Path>, factor: f64, dir: &Path) -> R
     match geo {
         Some(geo) => {
             let wrapper = dir.join(format!("{stem}-r{factor}.geo"));
-            std::fs::write(&wrapper, geo_at(geo, factor)?).map_err(|e| Error::io(&wrapper, e))?;
+            crate::atomic::write_atomic(&wrapper, geo_at(geo, factor)?.as_bytes())
+                .map_err(|e| Error::io(&wrapper, e))?;
             crate::mesh::gmsh::regenerate(&wrapper, &msh)?;
         }
         None => {

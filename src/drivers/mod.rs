@@ -10,9 +10,11 @@
 //! - [`lem`]: the LEM input of a LEM file or of a scene's `[lem]` table;
 //! - [`ensemble`]: Monte-Carlo members of a scene or LEM file, and their statistics;
 //! - [`srm`]: strength reduction, the factor of safety (`cdem srm`);
-//! - [`analysis`]: the scene's `[analysis]`, eq. 21/22 on its slip circle.
+//! - [`analysis`]: the scene's `[analysis]`, eq. 21/22 on its slip circle;
+//! - [`checkpoint`]: checkpoints of `cdem srm` and their resume, bit for bit.
 
 pub mod analysis;
+pub mod checkpoint;
 pub mod discretisation;
 pub mod ensemble;
 pub mod failure;

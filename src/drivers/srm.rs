@@ -30,14 +30,16 @@
 //! [`super::mesh_check`], estimates the error).
 
 use std::ops::ControlFlow;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use serde::Serialize;
 
+use super::checkpoint::{self, Checkpointing, Codec, Dec, Enc};
 use super::failure::{self, phase_plan};
 use super::phase::{failed_springs, NoWatch, Phase, Watch};
 use super::run::run_watched;
 use crate::analysis::slip_band::{slip_band, SlipBand, MIN_ELEMENTS_ALONG};
-use crate::error::{Error, SceneError};
+use crate::error::{CheckpointError, Error, SceneError};
 use crate::model::Model;
 use crate::physics::joint::JointState;
 use crate::physics::plastic::CellPlastic;
@@ -278,14 +280,22 @@ pub enum SrmProgress<'a> {
     TrialStart(f64),
     /// Every 100 steps of a trial: (step, unbalanced ratio).
     Step(usize, f64),
-    /// A trial ended.
+    /// A trial ended (on resume: each trial the checkpoint holds, after
+    /// [`SrmProgress::Resumed`]).
     TrialEnd(&'a Trial),
+    /// The search goes on from a checkpoint holding this many finished trials.
+    Resumed(usize),
 }
 
-struct Forward<'a, 'b>(&'a mut dyn FnMut(SrmProgress<'b>));
+/// Forwards the steps to the progress callback; stops the trial when the
+/// stop flag (a signal, [`Checkpointing::stop`]) is set.
+struct Forward<'a, 'b, 'c>(&'a mut dyn FnMut(SrmProgress<'b>), Option<&'c AtomicUsize>);
 
-impl Watch for Forward<'_, '_> {
+impl Watch for Forward<'_, '_, '_> {
     fn step(&mut self, _phase: Phase, view: &StepView) -> ControlFlow<()> {
+        if self.1.is_some_and(|s| s.load(Ordering::Relaxed) != 0) {
+            return ControlFlow::Break(());
+        }
         if view.steps.is_multiple_of(100) {
             (self.0)(SrmProgress::Step(view.steps, view.ratio));
         }
@@ -453,7 +463,7 @@ pub fn run_srm_with(
     foresight: Option<Foresight>,
     progress: &mut dyn FnMut(SrmProgress),
 ) -> Result<(SrmResult, Model), Error> {
-    search(scene, start, foresight, None, BRACKET_WIDTH, progress)
+    search(scene, start, foresight, None, BRACKET_WIDTH, None, progress)
 }
 
 /// [`run_srm_with`] bisected to a bracket of at most `width` (the mesh
@@ -465,7 +475,7 @@ pub fn search_to(
     width: f64,
     progress: &mut dyn FnMut(SrmProgress),
 ) -> Result<(SrmResult, Model), Error> {
-    search(scene, start, foresight, None, width, progress)
+    search(scene, start, foresight, None, width, None, progress)
 }
 
 /// [`run_srm`] after a run of the same scene, whose phase 2 is taken over
@@ -476,77 +486,233 @@ pub fn run_srm_after(
     run: Phase2Run,
     progress: &mut dyn FnMut(SrmProgress),
 ) -> Result<(SrmResult, Model), Error> {
-    search(scene, TrialStart::Warm, Some(Foresight::TRIALS), Some(run), BRACKET_WIDTH, progress)
+    search(scene, TrialStart::Warm, Some(Foresight::TRIALS), Some(run), BRACKET_WIDTH, None, progress)
+}
+
+/// [`run_srm`] with checkpoints (`cdem srm --checkpoint-every`, `--resume`):
+/// the search's bracket, its finished trials, the mechanism so far and the
+/// warm start's state are written at the end of a trial once `ck.every` has
+/// passed since the last, and when `ck.stop` is set (the trial under way is
+/// then dropped: its steps are done again on resume); with `ck.resume` the
+/// search goes on from the checkpoint in `ck.dir`. The result is the same,
+/// bit for bit, wherever the run was stopped (its wall times aside).
+pub fn run_srm_checkpointed(
+    scene: &Scene,
+    ck: &Checkpointing,
+    progress: &mut dyn FnMut(SrmProgress),
+) -> Result<(SrmResult, Model), Error> {
+    search(scene, TrialStart::Warm, Some(Foresight::TRIALS), None, BRACKET_WIDTH, Some(ck), progress)
+}
+
+/// Where the search stands between two trials: all a checkpoint holds.
+struct Bracket {
+    trials: Vec<Trial>,
+    lo: Option<f64>,
+    hi: Option<f64>,
+    /// The next factor of the bracketing.
+    f: f64,
+    /// The bracketing is over: bisect.
+    bisect: bool,
+    /// The displacement since the elastic state and the plastic blocks at
+    /// the current `hi`.
+    mechanism: Option<(Vec<f64>, Option<Vec<CellPlastic>>)>,
+}
+
+impl Bracket {
+    fn new() -> Self {
+        Self { trials: Vec::new(), lo: None, hi: None, f: 1.0, bisect: false, mechanism: None }
+    }
+
+    /// The next factor to try, None when the search is over.
+    fn next(&self, width: f64) -> Option<f64> {
+        if !self.bisect {
+            return Some(self.f);
+        }
+        match (self.lo, self.hi) {
+            (Some(l), Some(h)) if h - l > width => Some(0.5 * (l + h)),
+            _ => None,
+        }
+    }
+
+    /// The trial at `f` ended (`stable` or not) leaving `since`.
+    fn record(&mut self, f: f64, stable: bool, since: (Vec<f64>, Option<Vec<CellPlastic>>)) {
+        if stable {
+            self.lo = Some(f);
+        } else {
+            self.hi = Some(f);
+            self.mechanism = Some(since);
+        }
+        if self.bisect {
+            return;
+        }
+        if stable {
+            self.f *= BRACKET_RATIO;
+            self.bisect = self.hi.is_some() || self.f > MAX_FACTOR;
+        } else {
+            self.f /= BRACKET_RATIO;
+            self.bisect = self.lo.is_some() || self.f < MIN_FACTOR;
+        }
+    }
+}
+
+impl Codec for Trial {
+    fn put(&self, w: &mut Enc) {
+        let Trial {
+            factor,
+            outcome,
+            foreseen,
+            steps,
+            max_displacement,
+            failed_springs,
+            yielded_volume,
+            yielded_tension_volume,
+            started_from,
+            setup_s,
+            wall_s,
+            from_run,
+        } = self;
+        factor.put(w);
+        outcome.put(w);
+        foreseen.put(w);
+        steps.put(w);
+        max_displacement.put(w);
+        failed_springs.put(w);
+        yielded_volume.put(w);
+        yielded_tension_volume.put(w);
+        started_from.put(w);
+        setup_s.put(w);
+        wall_s.put(w);
+        from_run.put(w);
+    }
+    fn get(r: &mut Dec) -> Result<Self, CheckpointError> {
+        Ok(Trial {
+            factor: Codec::get(r)?,
+            outcome: Codec::get(r)?,
+            foreseen: Codec::get(r)?,
+            steps: Codec::get(r)?,
+            max_displacement: Codec::get(r)?,
+            failed_springs: Codec::get(r)?,
+            yielded_volume: Codec::get(r)?,
+            yielded_tension_volume: Codec::get(r)?,
+            started_from: Codec::get(r)?,
+            setup_s: Codec::get(r)?,
+            wall_s: Codec::get(r)?,
+            from_run: Codec::get(r)?,
+        })
+    }
+}
+
+/// The command name a strength reduction's checkpoint carries.
+const COMMAND: &str = "srm";
+
+/// The payload of a strength reduction's checkpoint: the elastic state's
+/// digest (phase 1 is run again on resume and must give the same bits), the
+/// wall time spent so far, the bracket, and the warm start's state.
+fn encode(elastic: u64, wall_s: f64, b: &Bracket, stable: &Option<(f64, State)>) -> Vec<u8> {
+    let mut w = Enc::default();
+    elastic.put(&mut w);
+    wall_s.put(&mut w);
+    b.trials.put(&mut w);
+    b.lo.put(&mut w);
+    b.hi.put(&mut w);
+    b.f.put(&mut w);
+    b.bisect.put(&mut w);
+    b.mechanism.as_ref().map(|m| m.0.clone()).put(&mut w);
+    b.mechanism.as_ref().and_then(|m| m.1.clone()).put(&mut w);
+    stable.as_ref().map(|s| s.0).put(&mut w);
+    if let Some((_, state)) = stable {
+        state.put(&mut w);
+    }
+    w.0
+}
+
+type Decoded = (u64, f64, Bracket, Option<(f64, State)>);
+
+fn decode(bytes: &[u8]) -> Result<Decoded, CheckpointError> {
+    let mut r = Dec::new(bytes);
+    let elastic = u64::get(&mut r)?;
+    let wall_s = f64::get(&mut r)?;
+    let trials = Codec::get(&mut r)?;
+    let (lo, hi, f, bisect) = (Codec::get(&mut r)?, Codec::get(&mut r)?, Codec::get(&mut r)?, Codec::get(&mut r)?);
+    let since: Option<Vec<f64>> = Codec::get(&mut r)?;
+    let cells: Option<Vec<CellPlastic>> = Codec::get(&mut r)?;
+    let stable_f: Option<f64> = Codec::get(&mut r)?;
+    let stable = match stable_f {
+        Some(f) => Some((f, State::get(&mut r)?)),
+        None => None,
+    };
+    r.finish()?;
+    let mechanism = since.map(|u| (u, cells));
+    Ok((elastic, wall_s, Bracket { trials, lo, hi, f, bisect, mechanism }, stable))
 }
 
 /// The search of the module documentation; `given` may stand in for the
-/// trial at F = 1.
+/// trial at F = 1; `ck` checkpoints it ([`run_srm_checkpointed`]).
 fn search(
     scene: &Scene,
     start: TrialStart,
     foresight: Option<Foresight>,
     mut given: Option<Phase2Run>,
     width: f64,
+    ck: Option<&Checkpointing>,
     progress: &mut dyn FnMut(SrmProgress),
 ) -> Result<(SrmResult, Model), Error> {
     let t0 = std::time::Instant::now();
+    let digest = ck.map(|_| checkpoint::scene_digest(scene)).transpose()?;
     let (mut red, elastic_steps) = Reduction::with_foresight(scene, start, foresight)?;
     progress(SrmProgress::Elastic(elastic_steps));
     let trial_budget = red.budget();
-    let mut trials = Vec::new();
-    let (mut lo, mut hi) = (None::<f64>, None::<f64>);
-    let mut mechanism = None;
-    type Outcome = (bool, (Vec<f64>, Option<Vec<CellPlastic>>));
-    let mut run = |f: f64, trials: &mut Vec<Trial>, progress: &mut dyn FnMut(SrmProgress)| -> Result<Outcome, Error> {
+    let elastic = checkpoint::state_digest(&red.elastic.u);
+    let mut b = Bracket::new();
+    let mut wall_before = 0.0;
+    if let (Some(ck), Some(digest)) = (ck, digest) {
+        if let Some(bytes) = ck.read(COMMAND, digest)? {
+            let path = ck.resume.as_deref().unwrap_or(&ck.dir).join(checkpoint::FILE_NAME);
+            let (found, wall_s, bracket, stable) =
+                decode(&bytes).map_err(|source| Error::Checkpoint { path: path.clone(), source })?;
+            if found != elastic {
+                let source = CheckpointError::ElasticState { found, computed: elastic };
+                return Err(Error::Checkpoint { path, source });
+            }
+            (wall_before, b, red.stable) = (wall_s, bracket, stable);
+            progress(SrmProgress::Resumed(b.trials.len()));
+            for t in &b.trials {
+                progress(SrmProgress::TrialEnd(t));
+            }
+        }
+    }
+    let mut clock = ck.map(|c| checkpoint::Clock::new(c.every));
+    let save = |b: &Bracket, red: &Reduction| -> Result<(), Error> {
+        if let (Some(ck), Some(digest)) = (ck, digest) {
+            let wall_s = wall_before + t0.elapsed().as_secs_f64();
+            ck.write(COMMAND, digest, &encode(elastic, wall_s, b, &red.stable))?;
+        }
+        Ok(())
+    };
+    while let Some(f) = b.next(width) {
         progress(SrmProgress::TrialStart(f));
         let adopted = given.take().filter(|_| f == 1.0).and_then(|g| red.adopt(g));
-        let TrialRun { trial: t, since, cells } = match adopted {
+        let run = match adopted {
             Some(run) => run,
-            None => red.trial(f, &mut Forward(progress))?,
+            None => {
+                let mut watch = Forward(progress, ck.map(|c| &*c.stop));
+                red.trial(f, &mut watch)?
+            }
         };
+        if let Some(sig) = ck.and_then(|c| c.signal()) {
+            // The trial was cut short: the checkpoint holds the trials before it.
+            save(&b, &red)?;
+            return Err(ck.expect("a signal comes with checkpoints").interrupted(sig));
+        }
+        let TrialRun { trial: t, since, cells } = run;
         progress(SrmProgress::TrialEnd(&t));
-        trials.push(t);
-        Ok((t.stable(), (since, cells)))
-    };
-    // Bracketing.
-    let mut f = 1.0;
-    loop {
-        let (stable, since) = run(f, &mut trials, progress)?;
-        if stable {
-            lo = Some(f);
-            if hi.is_some() {
-                break;
-            }
-            f *= BRACKET_RATIO;
-            if f > MAX_FACTOR {
-                break;
-            }
-        } else {
-            hi = Some(f);
-            mechanism = Some(since);
-            if lo.is_some() {
-                break;
-            }
-            f /= BRACKET_RATIO;
-            if f < MIN_FACTOR {
-                break;
-            }
+        b.trials.push(t);
+        b.record(f, t.stable(), (since, cells));
+        if clock.as_mut().is_some_and(|c| c.due()) {
+            save(&b, &red)?;
         }
     }
-    // Bisection.
-    while let (Some(l), Some(h)) = (lo, hi) {
-        if h - l <= width {
-            break;
-        }
-        let mid = 0.5 * (l + h);
-        let (stable, since) = run(mid, &mut trials, progress)?;
-        if stable {
-            lo = Some(mid);
-        } else {
-            hi = Some(mid);
-            mechanism = Some(since);
-        }
-    }
+    let Bracket { trials, lo, hi, mechanism, .. } = b;
     let (mechanism, mechanism_cells) = mechanism.map_or((None, None), |(u, c)| (Some(u), c));
     let band = mechanism_cells.as_deref().and_then(|c| slip_band(&red.model, c));
     let fs = lo.zip(hi).map(|(l, h)| 0.5 * (l + h));
@@ -564,7 +730,7 @@ fn search(
         elastic_steps,
         trial_budget,
         plan_setup_s: red.plan_setup_s,
-        wall_s: t0.elapsed().as_secs_f64(),
+        wall_s: wall_before + t0.elapsed().as_secs_f64(),
         reduced: reduced_strengths(&red.model),
         model: Answer::of(&red.model),
         water: red.model.water.as_ref().map(|w| w.summary()),

@@ -1130,6 +1130,7 @@ pub const ROWS: &[RowSpec] = &[
     spec("perf/pcg-over-fem", "performance: paper slope", "PCG to 1e-5 / FEM solve time (goal <= 3)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/lem/paper_slope", "performance: LEM grid, paper_slope", "pySlope / ours time (goal >= 300)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/lem/acads_1a", "performance: LEM grid, acads_1a", "pySlope / ours time (goal >= 300)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),
+    spec("perf/checkpoint/srm-write", "performance: cdem srm checkpoint, Griffiths & Lane hexahedra, plastic blocks", "one checkpoint write (encode, fsync, rename) / the default --checkpoint-every 300 s (goal <= 0.02)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
     // Phase 2 and strength reduction on the slip-surface slope (tests/performance.rs; the SRM rows
     // are measured by `cdem perf` only, skipped in the tests and in `cdem reproduce`).
     spec("perf/phase2/block-steps", PHASE2_CASE, "phase-2 steps to a decision, node-block masses (goal <= 5,000)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),

@@ -554,11 +554,14 @@ pub fn gmsh_available() -> bool {
 /// Meshes `geo` with gmsh into `msh` (MSH 4.1): `gmsh <geo> -3 -format msh41
 /// -o <msh>`. The `.geo` may set further options itself.
 pub fn regenerate(geo: &Path, msh: &Path) -> crate::Result<()> {
+    // gmsh writes a temporary sibling, moved into place once it succeeded:
+    // a killed gmsh leaves no torn mesh.
+    let tmp = crate::atomic::partial_path(msh);
     let command = format!("gmsh {} -3 -format msh41 -o {}", geo.display(), msh.display());
     let output = Command::new("gmsh")
         .arg(geo)
         .args(["-3", "-format", "msh41", "-o"])
-        .arg(msh)
+        .arg(&tmp)
         .output()
         .map_err(|e| Error::Gmsh(format!("cannot run `{command}` (is gmsh on PATH? `pip install gmsh`): {e}")))?;
     let text = format!("{}{}", String::from_utf8_lossy(&output.stdout), String::from_utf8_lossy(&output.stderr));
@@ -566,11 +569,12 @@ pub fn regenerate(geo: &Path, msh: &Path) -> crate::Result<()> {
     // so its `Error` lines count as failure too: show those, else the tail.
     let lines: Vec<&str> = text.lines().collect();
     let errors: Vec<&str> = lines.iter().copied().filter(|l| l.starts_with("Error")).collect();
-    if !output.status.success() || !errors.is_empty() || !msh.is_file() {
+    if !output.status.success() || !errors.is_empty() || !tmp.is_file() {
+        let _ = std::fs::remove_file(&tmp);
         let shown = if errors.is_empty() { &lines[lines.len().saturating_sub(20)..] } else { &errors[..] };
         return Err(Error::Gmsh(format!("`{command}` failed ({}):\n{}", output.status, shown.join("\n"))));
     }
-    Ok(())
+    crate::atomic::commit(&tmp, msh).map_err(|e| Error::io(msh, e))
 }
 
 /// None if `a` and `b` are the same mesh: same node tags and cells

@@ -287,7 +287,7 @@ pub fn write_msh(mesh: &Mesh, path: &Path) -> Result<(), Error> {
     let _ = writeln!(s, "{n_blocks} {tag} 1 {tag}");
     s.push_str(&blocks);
     s.push_str("$EndElements\n");
-    std::fs::write(path, s).map_err(|e| Error::io(path, e))
+    crate::atomic::write_atomic(path, s.as_bytes()).map_err(|e| Error::io(path, e))
 }
 
 #[cfg(test)]

@@ -16,7 +16,6 @@ pub mod run;
 pub mod srm;
 pub mod vtk;
 
-use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use serde::Serialize;
@@ -27,12 +26,16 @@ pub use fem::write_fem;
 pub use run::write_run;
 pub use srm::write_srm;
 
-/// Writes `bytes` to `path` atomically (temporary file + rename).
+pub use crate::atomic::partial_path;
+
+/// Writes `bytes` to `path` atomically ([`crate::atomic::write_atomic`]).
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), Error> {
-    let tmp = path.with_extension(format!("{}.partial", path.extension().and_then(|e| e.to_str()).unwrap_or("")));
-    let mut f = std::fs::File::create(&tmp).map_err(|e| Error::io(&tmp, e))?;
-    f.write_all(bytes).and_then(|_| f.sync_all()).map_err(|e| Error::io(&tmp, e))?;
-    std::fs::rename(&tmp, path).map_err(|e| Error::io(path, e))
+    crate::atomic::write_atomic(path, bytes).map_err(|e| Error::io(path, e))
+}
+
+/// Moves the finished `tmp` into place as `path` ([`crate::atomic::commit`]).
+pub fn commit(tmp: &Path, path: &Path) -> Result<(), Error> {
+    crate::atomic::commit(tmp, path).map_err(|e| Error::io(path, e))
 }
 
 pub fn write_json<T: Serialize>(path: &Path, value: &T) -> Result<(), Error> {

@@ -560,10 +560,11 @@ pub fn mesh_geometry(path: &Path, dir: &Path) -> crate::Result<Meshed> {
     if same_file(&scene, path) {
         scene = dir.join(format!("{stem}-scene.toml"));
     }
-    std::fs::write(&geo, g.geo(&source)?).map_err(|e| Error::io(&geo, e))?;
+    crate::atomic::write_atomic(&geo, g.geo(&source)?.as_bytes()).map_err(|e| Error::io(&geo, e))?;
     crate::mesh::gmsh::regenerate(&geo, &msh)?;
     let msh_name = msh.file_name().unwrap_or_default().to_string_lossy().into_owned();
-    std::fs::write(&scene, g.scene_skeleton(&msh_name, &source)).map_err(|e| Error::io(&scene, e))?;
+    crate::atomic::write_atomic(&scene, g.scene_skeleton(&msh_name, &source).as_bytes())
+        .map_err(|e| Error::io(&scene, e))?;
     Ok(Meshed { geo, msh, scene })
 }
 

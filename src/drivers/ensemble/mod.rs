@@ -505,15 +505,34 @@ pub fn run_members(
     circle: Option<lem::Circle>,
     progress: &mut dyn FnMut(usize),
 ) -> crate::Result<Vec<MemberRecord>> {
+    run_members_journaled(input, base, range, circle, Vec::new(), progress, &mut |_| Ok(()))
+}
+
+/// [`run_members`] going on after the members `done` (the first of
+/// `range`, in order: a journal read back), with `journal` called on each
+/// batch's new records, in member order, before the next batch starts.
+pub fn run_members_journaled(
+    input: &EnsembleInput,
+    base: u64,
+    range: std::ops::Range<usize>,
+    circle: Option<lem::Circle>,
+    done: Vec<MemberRecord>,
+    progress: &mut dyn FnMut(usize),
+    journal: &mut dyn FnMut(&[MemberRecord]) -> crate::Result<()>,
+) -> crate::Result<Vec<MemberRecord>> {
     let batch = input.members_at_once()?;
-    let mut out = Vec::with_capacity(range.len());
-    let ks: Vec<usize> = range.collect();
+    let mut out = done;
+    out.reserve(range.len().saturating_sub(out.len()));
+    let ks: Vec<usize> = range.skip(out.len()).collect();
+    progress(out.len());
     for chunk in ks.chunks(batch) {
         let records: Vec<crate::Result<MemberRecord>> =
             chunk.par_iter().with_max_len(1).map(|&k| run_member(input, base, k, circle)).collect();
+        let start = out.len();
         for r in records {
             out.push(r?);
         }
+        journal(&out[start..])?;
         progress(out.len());
     }
     Ok(out)

@@ -38,6 +38,7 @@ use std::path::Path;
 use crate::error::Error;
 
 pub mod bytes;
+pub mod checkpoint;
 pub mod damping;
 pub mod ensemble;
 pub mod failure;
@@ -164,7 +165,19 @@ pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn 
         }
         false => Vec::new(),
     };
+    progress("checkpoint cost");
+    let ck = checkpoint::checkpoint_cost(root, &out.join("checkpoint"), 5)?;
     let mut md = write_report(out, &head, &failure, ensemble.as_ref(), &damping, &scaling)?;
+    let row = checkpoint::checkpoint_row(&ck);
+    md.push_str(&format!(
+        "\n## Checkpoint cost\n\n`{}`: {:.2e} of the wall time at the default interval (goal <= {}; {:?}): {}\n",
+        row.id,
+        row.ours,
+        row.reference,
+        row.status(),
+        row.note
+    ));
+    crate::output::write_atomic(&out.join("perf.md"), md.as_bytes())?;
     if !trials.is_empty() {
         tables::write_csv(&out.join("trials.csv"), &trials)?;
         md.push_str("\n## Phase 2 and strength reduction against size (trials.csv)\n\n");

@@ -40,7 +40,8 @@ pub fn histogram(path: &Path, fs: &[f64], s: &EnsembleSummary) -> crate::Result<
         counts[(((v - x0) / w) as usize).min(bins - 1)] += 1;
     }
     let ymax = *counts.iter().max().unwrap_or(&1) as f64 * 1.15;
-    let root = BitMapBackend::new(path, (900, 560)).into_drawing_area();
+    let tmp = crate::atomic::partial_path(path);
+    let root = BitMapBackend::new(&tmp, (900, 560)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| plot_err(path, e))?;
     let r = s.reliability.as_ref();
     let caption = format!(
@@ -96,7 +97,8 @@ pub fn histogram(path: &Path, fs: &[f64], s: &EnsembleSummary) -> crate::Result<
         .label_font(("sans-serif", 15))
         .draw()
         .map_err(|e| plot_err(path, e))?;
-    root.present().map_err(|e| plot_err(path, e))
+    root.present().map_err(|e| plot_err(path, e))?;
+    crate::output::commit(&tmp, path)
 }
 
 /// Mean FS and PF of the first n members against n (log n), each point with
@@ -107,7 +109,8 @@ pub fn convergence(path: &Path, s: &EnsembleSummary) -> crate::Result<()> {
     if pts.is_empty() {
         return Ok(());
     }
-    let root = BitMapBackend::new(path, (900, 700)).into_drawing_area();
+    let tmp = crate::atomic::partial_path(path);
+    let root = BitMapBackend::new(&tmp, (900, 700)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| plot_err(path, e))?;
     let panels = root.split_evenly((2, 1));
     let n1 = pts.last().map_or(10.0, |p| p.n as f64).max(10.0);
@@ -166,7 +169,8 @@ pub fn convergence(path: &Path, s: &EnsembleSummary) -> crate::Result<()> {
                 .map_err(|e| plot_err(path, e))?;
         }
     }
-    root.present().map_err(|e| plot_err(path, e))
+    root.present().map_err(|e| plot_err(path, e))?;
+    crate::output::commit(&tmp, path)
 }
 
 /// An ensemble's figures in `dir` (none when no member has an FS), and
@@ -196,7 +200,8 @@ pub fn pf_by_variable(path: &Path, key: &str, bins: &[PfBin]) -> crate::Result<(
     if bins.is_empty() {
         return Ok(());
     }
-    let root = BitMapBackend::new(path, (900, 560)).into_drawing_area();
+    let tmp = crate::atomic::partial_path(path);
+    let root = BitMapBackend::new(&tmp, (900, 560)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| plot_err(path, e))?;
     let (x0, x1) = (bins[0].centre, bins[bins.len() - 1].centre);
     let pad = ((x1 - x0) * 0.08).max(1e-6);
@@ -235,5 +240,6 @@ pub fn pf_by_variable(path: &Path, key: &str, bins: &[PfBin]) -> crate::Result<(
             Text::new(format!("n {}", b.members), (b.centre + 1.5 * cap, b.pf + 0.01), ("sans-serif", 13).into_font())
         }))
         .map_err(|e| plot_err(path, e))?;
-    root.present().map_err(|e| plot_err(path, e))
+    root.present().map_err(|e| plot_err(path, e))?;
+    crate::output::commit(&tmp, path)
 }

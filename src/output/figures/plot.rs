@@ -81,7 +81,8 @@ pub fn line_plot(
     y: Scale,
 ) -> Result<(), Error> {
     init_fonts();
-    let root = BitMapBackend::new(path, (900, 600)).into_drawing_area();
+    let tmp = crate::atomic::partial_path(path);
+    let root = BitMapBackend::new(&tmp, (900, 600)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| plot_err(path, e))?;
     let (x0, x1) = range(series.iter().flat_map(|s| s.points.iter().map(|p| p.0)), x == Scale::Log);
     let (y0, y1) = range(series.iter().flat_map(|s| s.points.iter().map(|p| p.1)), y == Scale::Log);
@@ -146,7 +147,8 @@ pub fn line_plot(
         (Scale::Linear, Scale::Log) => draw!(builder.build_cartesian_2d(x0..x1, (y0..y1).log_scale())),
         (Scale::Log, Scale::Log) => draw!(builder.build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())),
     }
-    root.present().map_err(|e| plot_err(path, e))
+    root.present().map_err(|e| plot_err(path, e))?;
+    crate::output::commit(&tmp, path)
 }
 
 /// Interpolates a list of RGB stops at `t` in [0, 1].
@@ -390,7 +392,8 @@ pub fn contour_panels(
     let foot = 10 + 24 * style.notes.len() as u32;
     let bar_w = 200;
     let (w, h) = (pw * cols as u32 + bar_w, head + ph * rows as u32 + foot);
-    let root = BitMapBackend::new(path, (w, h)).into_drawing_area();
+    let tmp = crate::atomic::partial_path(path);
+    let root = BitMapBackend::new(&tmp, (w, h)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| plot_err(path, e))?;
     let (top, rest) = root.split_vertically(head);
     if head > 0 {
@@ -443,7 +446,8 @@ pub fn contour_panels(
             .draw(&Text::new(note.clone(), (20, 4 + 24 * i as i32), ("sans-serif", 16).into_font()))
             .map_err(|e| plot_err(path, e))?;
     }
-    root.present().map_err(|e| plot_err(path, e))
+    root.present().map_err(|e| plot_err(path, e))?;
+    crate::output::commit(&tmp, path)
 }
 
 /// The colour bar of `scale` in `area`, with `label` above it.
@@ -526,7 +530,8 @@ pub fn slip_profile(path: &Path, fig: &SlipProfile) -> Result<(), Error> {
     let plot_w = (w - 2 * margin - y_area) as f64;
     let top_h = (plot_w * (z1 - z0) / (x1 - x0)) as u32 + 30 + 40 + margin;
     let (bottom_h, foot_h) = (520u32, 12 + 24 * fig.notes.len() as u32);
-    let root = BitMapBackend::new(path, (w, 50 + top_h + bottom_h + foot_h)).into_drawing_area();
+    let tmp = crate::atomic::partial_path(path);
+    let root = BitMapBackend::new(&tmp, (w, 50 + top_h + bottom_h + foot_h)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| plot_err(path, e))?;
     let (head, rest) = root.split_vertically(50);
     head.titled(fig.title, ("sans-serif", 24)).map_err(|e| plot_err(path, e))?;
@@ -669,7 +674,8 @@ pub fn slip_profile(path: &Path, fig: &SlipProfile) -> Result<(), Error> {
         foot.draw(&Text::new(note.clone(), (20, 4 + 24 * i as i32), ("sans-serif", 16).into_font()))
             .map_err(|e| plot_err(path, e))?;
     }
-    root.present().map_err(|e| plot_err(path, e))
+    root.present().map_err(|e| plot_err(path, e))?;
+    crate::output::commit(&tmp, path)
 }
 
 /// A tick within rounding of zero (plotters steps ticks by repeated addition,

@@ -17,7 +17,8 @@ use crate::model::Model;
 /// Writes `runout.png`.
 pub fn runout_png(model: &Model, r: &RunoutResult, path: &Path) -> Result<(), Error> {
     init_fonts();
-    let root = BitMapBackend::new(path, (1500, 650)).into_drawing_area();
+    let tmp = crate::atomic::partial_path(path);
+    let root = BitMapBackend::new(&tmp, (1500, 650)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| plot_err(path, e))?;
     let (left, right) = root.split_horizontally(950);
     // The frames drawn: start, 1/3, 2/3, end.
@@ -102,5 +103,6 @@ pub fn runout_png(model: &Model, r: &RunoutResult, path: &Path) -> Result<(), Er
         .draw()
         .map_err(|e| plot_err(path, e))?;
     chart.draw_series(LineSeries::new(pts, colours[3].stroke_width(2))).map_err(|e| plot_err(path, e))?;
-    root.present().map_err(|e| plot_err(path, e))
+    root.present().map_err(|e| plot_err(path, e))?;
+    crate::output::commit(&tmp, path)
 }

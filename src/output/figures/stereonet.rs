@@ -36,7 +36,8 @@ pub fn stereonet(
 ) -> Result<(), Error> {
     init_fonts();
     let e = |e| plot_err(path, e);
-    let root = BitMapBackend::new(path, (900, 980)).into_drawing_area();
+    let tmp = crate::atomic::partial_path(path);
+    let root = BitMapBackend::new(&tmp, (900, 980)).into_drawing_area();
     root.fill(&WHITE).map_err(e)?;
     let (title, body) = root.split_vertically(80);
     title
@@ -152,5 +153,5 @@ pub fn stereonet(
             .map_err(e)?;
     }
     root.present().map_err(e)?;
-    Ok(())
+    crate::output::commit(&tmp, path)
 }

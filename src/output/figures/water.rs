@@ -18,7 +18,8 @@ pub fn fs_by_rise(path: &Path, lem: &[(f64, f64, f64)], cdem: &[(f64, bool)]) ->
     let fs = lem.iter().flat_map(|p| [p.1, p.2]).filter(|v| v.is_finite());
     let (y0, y1) = fs.fold((1.0_f64, 1.0_f64), |(a, b), v| (a.min(v), b.max(v)));
     let (pad_x, pad_y) = (0.04 * (x1 - x0).max(1.0), 0.08 * (y1 - y0).max(0.1));
-    let root = BitMapBackend::new(path, (900, 600)).into_drawing_area();
+    let tmp = crate::atomic::partial_path(path);
+    let root = BitMapBackend::new(&tmp, (900, 600)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| plot_err(path, e))?;
     let mut chart = ChartBuilder::on(&root)
         .caption("Factor of safety against the water table's rise", ("sans-serif", 21))
@@ -72,5 +73,6 @@ pub fn fs_by_rise(path: &Path, lem: &[(f64, f64, f64)], cdem: &[(f64, bool)]) ->
         .label_font(("sans-serif", 15))
         .draw()
         .map_err(|e| plot_err(path, e))?;
-    root.present().map_err(|e| plot_err(path, e))
+    root.present().map_err(|e| plot_err(path, e))?;
+    crate::output::commit(&tmp, path)
 }
