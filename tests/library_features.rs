@@ -1,5 +1,6 @@
 //! The solver is usable as a library without the harness's and the CLI's
-//! crates: `clap`, `indicatif`, `plotters` and `dejavu` are optional
+//! crates: `clap`, `indicatif`, `signal-hook` (the CLI's SIGINT/SIGTERM
+//! checkpoints), `plotters` and `dejavu` are optional
 //! dependencies enabled only by the default feature `harness` (`plotters`
 //! and `dejavu` through the feature `plot` it enables: the product's figures
 //! and the application layer), and the binary requires that feature. So
@@ -11,7 +12,7 @@
 fn cli_and_plotting_crates_come_only_with_the_harness_feature() {
     let manifest: toml::Table = std::fs::read_to_string("Cargo.toml").unwrap().parse().unwrap();
     let deps = manifest["dependencies"].as_table().unwrap();
-    let harness_only = ["clap", "indicatif", "plotters", "dejavu"];
+    let harness_only = ["clap", "indicatif", "signal-hook", "plotters", "dejavu"];
     for name in harness_only {
         let optional = deps[name].as_table().and_then(|t| t.get("optional")).and_then(|v| v.as_bool());
         assert_eq!(optional, Some(true), "{name} must be an optional dependency");
