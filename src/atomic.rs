@@ -7,12 +7,15 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-/// A temporary sibling of `path` for this process: `.NAME.partial-PID.EXT`
-/// (the extension kept last, for writers that choose a format by it).
+/// A temporary sibling of `path` for this process and this write:
+/// `.NAME.partial-PID-N.EXT` (`N` counts the writes of the process, so that
+/// two threads writing the same file never share a temporary file).
 pub fn partial_path(path: &Path) -> PathBuf {
     let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
     let ext = path.extension().map(|e| format!(".{}", e.to_string_lossy())).unwrap_or_default();
-    path.with_file_name(format!(".{stem}.partial-{}{ext}", std::process::id()))
+    static NEXT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    path.with_file_name(format!(".{stem}.partial-{}-{n}{ext}", std::process::id()))
 }
 
 /// Writes `bytes` to `path` atomically (temporary sibling, fsync, rename,
@@ -56,7 +59,7 @@ pub fn sync_dir(path: &Path) {
 /// Removes the [`partial_path`] files other processes left in `dir` (killed
 /// while they wrote); this process's own are kept. Returns how many.
 pub fn remove_stale_partials(dir: &Path) -> usize {
-    let own = format!(".partial-{}", std::process::id());
+    let own = format!(".partial-{}-", std::process::id());
     let Ok(entries) = std::fs::read_dir(dir) else { return 0 };
     let mut n = 0;
     for e in entries.filter_map(Result::ok) {
