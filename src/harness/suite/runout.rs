@@ -326,15 +326,7 @@ pub fn toppling_rows() -> Result<(BlockRun, Vec<Check>), Error> {
 pub fn launched_rows() -> Result<(BlockRun, Vec<Check>), Error> {
     let v0 = reg::RUNOUT_LAUNCH_SPEED;
     let phi = reg::RUNOUT_LAUNCH_PHI_DEG;
-    let stop = v0 / (phi.to_radians().tan() * G);
-    let setup = Setup { v0: [v0, 0.0, 0.0], ..Setup::new(0.0, stop + 0.4) };
-    let r = run(&reg::RUNOUT_LAUNCHED, &setup, phi)?;
-    let d = r.x_at(setup.duration);
-    let rows = vec![
-        reg::row("runout/launched-stop").value(d, reg::launch_distance(v0, phi, G), r.seconds),
-        energy_row("runout/energy-launched", &r),
-    ];
-    Ok((r, rows))
+    launch(None, reg::launch_distance(v0, phi, G), "runout/launched-stop", "runout/energy-launched")
 }
 
 /// Rows `runout/launched-submerged-stop` and its energy: the launched block
@@ -342,15 +334,24 @@ pub fn launched_rows() -> Result<(BlockRun, Vec<Check>), Error> {
 pub fn submerged_rows() -> Result<(BlockRun, Vec<Check>), Error> {
     let v0 = reg::RUNOUT_LAUNCH_SPEED;
     let phi = reg::RUNOUT_LAUNCH_PHI_DEG;
-    let buoyant = 1.0 - reg::RUNOUT_WATER_DENSITY / reg::RUNOUT_ROCK_DENSITY;
-    let stop = v0 / (phi.to_radians().tan() * G * buoyant);
-    let setup = Setup { v0: [v0, 0.0, 0.0], water_level: Some(reg::RUNOUT_WATER_LEVEL), ..Setup::new(0.0, stop + 0.4) };
-    let r = run(&reg::RUNOUT_LAUNCHED, &setup, phi)?;
+    let stop = reg::submerged_launch_distance(v0, phi, G);
+    launch(Some(reg::RUNOUT_WATER_LEVEL), stop, "runout/launched-submerged-stop", "runout/energy-launched-submerged")
+}
+
+/// The launched block (under a water table at `water_level`, if any), run
+/// for its stopping time (from the reference distance `stop`: uniform
+/// deceleration, `2 stop / v0`) and 0.4 s more; its travel and budget rows.
+fn launch(
+    water_level: Option<f64>,
+    stop: f64,
+    stop_id: &str,
+    energy_id: &str,
+) -> Result<(BlockRun, Vec<Check>), Error> {
+    let v0 = reg::RUNOUT_LAUNCH_SPEED;
+    let setup = Setup { v0: [v0, 0.0, 0.0], water_level, ..Setup::new(0.0, 2.0 * stop / v0 + 0.4) };
+    let r = run(&reg::RUNOUT_LAUNCHED, &setup, reg::RUNOUT_LAUNCH_PHI_DEG)?;
     let d = r.x_at(setup.duration);
-    let rows = vec![
-        reg::row("runout/launched-submerged-stop").value(d, reg::submerged_launch_distance(v0, phi, G), r.seconds),
-        energy_row("runout/energy-launched-submerged", &r),
-    ];
+    let rows = vec![reg::row(stop_id).value(d, stop, r.seconds), energy_row(energy_id, &r)];
     Ok((r, rows))
 }
 

@@ -182,8 +182,10 @@ struct RunoutWater {
     area: Vec<[f64; 3]>,
     /// The external forces less the static water forces: gravity and loads.
     f_dry: Vec<f64>,
-    /// The water's force at the last step (N, `3 i + d`), empty before the first.
+    /// The water's force at the last step (N, `3 i + d`), empty before the
+    /// first, and the buffer the next step's is built in.
     force: Vec<f64>,
+    next: Vec<f64>,
 }
 
 impl RunoutWater {
@@ -197,13 +199,15 @@ impl RunoutWater {
                 f_dry[3 * i + d] += u * a[d];
             }
         }
-        Some(Self { surface, area: w.node_area.clone(), f_dry, force: Vec::new() })
+        Some(Self { surface, area: w.node_area.clone(), f_dry, force: Vec::new(), next: Vec::new() })
     }
 
     /// The water's force at positions `x`, each node's area turned by
     /// `rotation(i)`; returns its work since the last call (trapezoid).
     fn update(&mut self, x: &[[f64; 3]], x_prev: &[[f64; 3]], rotation: impl Fn(usize) -> Mat3) -> f64 {
-        let mut force = vec![0.0; 3 * x.len()];
+        let mut force = std::mem::take(&mut self.next);
+        force.clear();
+        force.resize(3 * x.len(), 0.0);
         for (i, p) in x.iter().enumerate() {
             let u = self.surface.pressure(p[0], p[2]);
             if u > 0.0 {
@@ -221,7 +225,7 @@ impl RunoutWater {
                 }
             }
         }
-        self.force = force;
+        self.next = std::mem::replace(&mut self.force, force);
         work
     }
 }
