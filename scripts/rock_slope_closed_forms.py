@@ -58,6 +58,23 @@ def plane_failure(H, psi_f, psi_p, c, phi, gamma, b, gamma_w=0.0, z_w=0.0, uplif
     return {"z": z, "A": A, "W": W, "U": U, "V": V, "x_crest": x_crest, "x_crack": x_crack, "FS": fs}
 
 
+def barton_bandis_tau(sigma_n, jrc, jcs, phi_r, cap=70.0):
+    """Barton & Choubey (1977): tau = sigma_n tan(phi_r + JRC log10(JCS / sigma_n)),
+    the total angle capped (70 deg, as RS2 and Slide) and the roughness term at
+    least zero (sigma_n >= JCS); no strength at sigma_n <= 0."""
+    if sigma_n <= 0.0:
+        return 0.0
+    return sigma_n * math.tan(D(min(phi_r + max(jrc * math.log10(jcs / sigma_n), 0.0), cap)))
+
+
+def plane_failure_bb(p, jrc, jcs, phi_r):
+    """A plane-failure case of plane_failure() with the plane a Barton-Bandis joint,
+    its normal stress uniform: FS = tau(sigma_n') A / (W sin psi_p + V cos psi_p)."""
+    psi_p = D(30.0)
+    s = (p["W"] * math.cos(psi_p) - p["U"] - p["V"] * math.sin(psi_p)) / p["A"]
+    return barton_bandis_tau(s, jrc, jcs, phi_r) * p["A"] / (p["W"] * math.sin(psi_p) + p["V"] * math.cos(psi_p))
+
+
 def infinite_slope(beta, z, gamma, c, phi, gamma_w, m):
     """The infinite slope, water table parallel to the surface m z above the slip plane."""
     u = gamma_w * m * z * math.cos(D(beta)) ** 2
@@ -239,6 +256,12 @@ def cases():
         out[f"plane_water_{name}"] = plane_failure(
             H=30.0, psi_f=60.0, psi_p=30.0, c=48.0, phi=30.0, gamma=25.5, b=9.0, gamma_w=9.81, z_w=z_w, uplift=uplift
         )
+    # 1d. The plane on a Barton-Bandis joint (references/laws.md): JRC 6, JCS 40 MPa
+    # (40e3 kPa: the script's stresses are kPa), phi_r 25, dry and the crack full.
+    out["plane_bb_dry"] = plane_failure_bb(out["plane"], 6.0, 40e3, 25.0)
+    out["plane_bb_full"] = plane_failure_bb(out["plane_water_full"], 6.0, 40e3, 25.0)
+    # The direct shear check of issue 58: JRC 10, JCS 100 MPa, phi_r 30 at 1 MPa (kPa).
+    out["bb_tau_1mpa"] = barton_bandis_tau(1e3, 10.0, 100e3, 30.0)
     # 1c. The infinite slope with a parallel water table (references/water.md):
     # beta 30, z = 4 / cos 30, gamma 20 kN/m^3, c' 5 kPa, phi' 35.
     for m in (0.0, 0.5, 1.0):
@@ -300,6 +323,8 @@ def main():
     for name in ("half", "full", "crack_only"):
         q = out[f"plane_water_{name}"]
         print(f"plane, water {name}: U = {q['U']:.2f} kN/m, V = {q['V']:.2f} kN/m, FS = {q['FS']:.4f}")
+    print(f"plane, Barton-Bandis JRC 6, JCS 40 MPa, phi_r 25: dry FS = {out['plane_bb_dry']:.5f}, crack full FS = {out['plane_bb_full']:.5f}")
+    print(f"Barton-Bandis JRC 10, JCS 100 MPa, phi_r 30 at 1 MPa: tau = {out['bb_tau_1mpa']:.2f} kPa")
     for m in (0.0, 0.5, 1.0):
         print(f"infinite slope, m = {m}: FS = {out[f'infinite_slope_m{m}']:.4f}")
     w = out["wedge_symmetric"]

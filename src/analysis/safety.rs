@@ -53,20 +53,22 @@ pub struct SafetyFactors {
 }
 
 pub fn safety_factors(points: &[SurfacePoint], cohesion: f64, tan_phi: f64) -> SafetyFactors {
-    safety_factors_with(points, |_| (cohesion, tan_phi))
+    safety_factors_with(points, |_, sigma_n| sigma_n * tan_phi + cohesion)
 }
 
-/// Eq. 21 and 22 with the strength `(c, tan(phi))` of each point
-/// (`strength(i)` for point `i`), for a surface through several materials.
-pub fn safety_factors_with(points: &[SurfacePoint], strength: impl Fn(usize) -> (f64, f64)) -> SafetyFactors {
+/// Eq. 21 and 22 with the shear strength `tau = strength(i, sigma_n)` (Pa)
+/// of each point `i` at its normal stress: `c + sigma_n tan(phi)` of
+/// Mohr-Coulomb, or a joint law's envelope
+/// ([`crate::physics::joint::JointStrength::shear_strength`]), for a surface
+/// through several materials.
+pub fn safety_factors_with(points: &[SurfacePoint], strength: impl Fn(usize, f64) -> f64) -> SafetyFactors {
     let mut resisting = 0.0;
     let mut driving = 0.0;
     let k_i = points
         .iter()
         .enumerate()
         .map(|(i, p)| {
-            let (cohesion, tan_phi) = strength(i);
-            let r = (p.sigma_n * tan_phi + cohesion) * p.area;
+            let r = strength(i, p.sigma_n) * p.area;
             let d = p.tau * p.area;
             resisting += r;
             driving += d;

@@ -29,7 +29,7 @@ pub fn inputs(g: &Geometry) -> Result<(Orientation, Vec<SetInput>), SceneError> 
         .iter()
         .enumerate()
         .map(|(i, j)| {
-            let friction = j.strength.map(|s| s.friction_angle).ok_or_else(|| {
+            let friction = j.strength.map(|s| s.friction_angle()).ok_or_else(|| {
                 SceneError::invalid(
                     format!("joint_set[{i}].strength"),
                     "the kinematic tests need the set's friction angle",

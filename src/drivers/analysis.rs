@@ -13,6 +13,7 @@ use crate::error::{Error, SceneError};
 use crate::mesh::locate::CellLocator;
 use crate::mesh::Mesh;
 use crate::model::Model;
+use crate::physics::joint::{JointStrength, StrengthSection};
 use crate::physics::spring::SpringState;
 use crate::scene::Scene;
 
@@ -99,17 +100,22 @@ pub fn run_analysis(
         .interface
         .as_ref()
         .and_then(|name| scene.interface.iter().find(|i| &i.group == name).and_then(|i| i.strength.as_ref()));
-    let uniform: Option<((f64, f64), String)> = match (spec.strength, interface_strength) {
-        (Some(st), _) => Some(((st.cohesion, st.friction_angle), "analysis.strength".into())),
-        (None, Some(st)) => Some((
-            (st.cohesion, st.friction_angle),
-            format!("interface {:?}", spec.interface.as_deref().unwrap_or_default()),
-        )),
+    let uniform: Option<(PointStrength, String)> = match (spec.strength, interface_strength) {
+        (Some(st), _) => Some((PointStrength::MohrCoulomb(st.cohesion, st.friction_angle), "analysis.strength".into())),
+        (None, Some(st)) => {
+            Some((PointStrength::of(st), format!("interface {:?}", spec.interface.as_deref().unwrap_or_default())))
+        }
         (None, None) => None,
     };
     let (per_station, strength_from) = match &uniform {
         Some((strength, from)) => (vec![*strength; stations.len()], from.clone()),
-        None => (material_strengths(scene, mesh, &stations)?, "[[lem.material]] of each station's cell".into()),
+        None => (
+            material_strengths(scene, mesh, &stations)?
+                .into_iter()
+                .map(|(c, phi)| PointStrength::MohrCoulomb(c, phi))
+                .collect(),
+            "[[lem.material]] of each station's cell".into(),
+        ),
     };
     let mut points = from_cell_stresses(&arc, &stations, stress);
     // With water the blocks carry the total stress: eq. 19 takes the effective
@@ -139,8 +145,45 @@ pub fn run_analysis(
     Ok(Some(AnalysisReport { circle_from, lem_fs, arc, state, strength_from, min_segment, stresses, springs }))
 }
 
-fn factors(points: Vec<SurfacePoint>, strength: Vec<(f64, f64)>, min_segment: f64) -> Factors {
-    let sf = safety_factors_with(&points, |i| (strength[i].0, strength[i].1.to_radians().tan()));
+/// The strength eq. 21 takes at a point: Mohr-Coulomb's `(c (Pa), phi
+/// (deg))` (`[analysis].strength`, `[[lem.material]]`, a Coulomb interface)
+/// or a joint law's envelope (an interface of another law).
+#[derive(Debug, Clone, Copy)]
+enum PointStrength {
+    MohrCoulomb(f64, f64),
+    Joint(JointStrength),
+}
+
+impl PointStrength {
+    fn of(st: &StrengthSection) -> Self {
+        match st.coulomb() {
+            Some(c) => PointStrength::MohrCoulomb(c.cohesion, c.friction_angle),
+            None => PointStrength::Joint(st.strength()),
+        }
+    }
+    /// The shear strength (Pa) at the normal stress `sigma_n` (Pa).
+    fn tau(&self, sigma_n: f64) -> f64 {
+        match *self {
+            PointStrength::MohrCoulomb(c, phi) => sigma_n * phi.to_radians().tan() + c,
+            PointStrength::Joint(j) => j.shear_strength(sigma_n),
+        }
+    }
+    /// As `analysis.csv` shows it, `(c, phi)`: a joint law's secant angle
+    /// `atan(tau / sigma_n)` at the point (no cohesion).
+    fn shown(&self, sigma_n: f64) -> (f64, f64) {
+        match *self {
+            PointStrength::MohrCoulomb(c, phi) => (c, phi),
+            PointStrength::Joint(j) if sigma_n > 0.0 => {
+                (0.0, (j.shear_strength(sigma_n) / sigma_n).atan().to_degrees())
+            }
+            PointStrength::Joint(_) => (0.0, 0.0),
+        }
+    }
+}
+
+fn factors(points: Vec<SurfacePoint>, strength: Vec<PointStrength>, min_segment: f64) -> Factors {
+    let sf = safety_factors_with(&points, |i, sigma_n| strength[i].tau(sigma_n));
+    let strength = points.iter().zip(&strength).map(|(p, st)| st.shown(p.sigma_n)).collect();
     let s: Vec<f64> = points.iter().map(|p| p.s).collect();
     let segments = sign_segments(&s, &sf.k_i, min_segment);
     Factors { k: sf.k, resisting: sf.resisting, driving: sf.driving, segments, points, strength, k_i: sf.k_i }

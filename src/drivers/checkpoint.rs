@@ -25,7 +25,7 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use crate::error::{CheckpointError, Error};
-use crate::physics::joint::{JointState, JointStrength, Softening};
+use crate::physics::joint::{JointState, JointStrength};
 use crate::physics::mohr_coulomb::{MohrCoulomb, RockStrength, Yield};
 use crate::physics::plastic::{CellPlastic, RockState, Screen, TetPlastic};
 use crate::physics::spring::{SpringState, SpringStatus};
@@ -33,8 +33,9 @@ use crate::scene::Scene;
 use crate::solver::State;
 use crate::summary::EndState;
 
-/// The checkpoint format this binary writes and reads.
-pub const FORMAT_VERSION: u32 = 1;
+/// The checkpoint format this binary writes and reads (2: a joint's
+/// strength is its law's tag and parameter list, for Barton-Bandis joints).
+pub const FORMAT_VERSION: u32 = 2;
 const MAGIC: &[u8; 8] = b"CDEMCKPT";
 /// The checkpoint file's name in its directory.
 pub const FILE_NAME: &str = "checkpoint.cdem";
@@ -399,7 +400,6 @@ macro_rules! enum_codec {
 }
 
 enum_codec!(SpringStatus, SpringStatus::Intact, SpringStatus::Tension, SpringStatus::Shear);
-enum_codec!(Softening, Softening::Brittle, Softening::Ductile);
 enum_codec!(Yield, Yield::Elastic, Yield::Shear, Yield::Tension);
 enum_codec!(EndState, EndState::Equilibrium, EndState::GlobalSliding, EndState::Undecided);
 
@@ -419,7 +419,19 @@ macro_rules! struct_codec {
     };
 }
 
-struct_codec!(JointStrength { tensile, cohesion, tan_phi, softening });
+/// A joint's strength: its law's tag and [`JointStrength::words`].
+impl Codec for JointStrength {
+    fn put(&self, w: &mut Enc) {
+        let (tag, words) = self.words();
+        tag.put(w);
+        words.put(w);
+    }
+    fn get(r: &mut Dec) -> Result<Self, CheckpointError> {
+        let tag = u8::get(r)?;
+        let words = Vec::<f64>::get(r)?;
+        JointStrength::from_words(tag, &words).ok_or_else(|| r.bad("a joint strength of an unknown law or shape"))
+    }
+}
 struct_codec!(JointState { strength });
 struct_codec!(SpringState { slip, status });
 struct_codec!(RockStrength { cohesion, tan_phi, tensile, tan_psi });
@@ -463,8 +475,8 @@ mod tests {
         assert!(matches!(unframe(&f, "run", 7), Err(CheckpointError::Command { .. })));
         assert_eq!(unframe(b"hello world, not a checkpoint", "srm", 7), Err(CheckpointError::NotACheckpoint));
         let mut v2 = f.clone();
-        v2[8] = 2;
-        assert_eq!(unframe(&v2, "srm", 7), Err(CheckpointError::Version { found: 2, expected: FORMAT_VERSION }));
+        v2[8] = 1;
+        assert_eq!(unframe(&v2, "srm", 7), Err(CheckpointError::Version { found: 1, expected: FORMAT_VERSION }));
     }
 
     #[test]

@@ -25,8 +25,10 @@
 //!   [`LEM_ACADS_1A`] and [`SLOPE`].
 
 mod fserror;
+mod laws;
 mod runout;
 pub use fserror::*;
+pub use laws::*;
 pub use runout::*;
 use std::path::Path;
 
@@ -1130,6 +1132,7 @@ pub const ROWS: &[RowSpec] = &[
     spec("perf/pcg-over-fem", "performance: paper slope", "PCG to 1e-5 / FEM solve time (goal <= 3)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/lem/paper_slope", "performance: LEM grid, paper_slope", "pySlope / ours time (goal >= 300)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/lem/acads_1a", "performance: LEM grid, acads_1a", "pySlope / ours time (goal >= 300)", Reported(Goal::AtLeast), PERFORMANCE_MD, "tests/performance.rs"),
+    spec("perf/laws/bb-over-coulomb-springs", "performance: paper slope springs, failure phase", "Barton-Bandis / Coulomb spring pass time, one thread, alternating batches (goal <= 1.2)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
     spec("perf/checkpoint/srm-write", "performance: cdem srm checkpoint, Griffiths & Lane hexahedra, plastic blocks", "one checkpoint write (encode, fsync, rename) / the default --checkpoint-every 300 s (goal <= 0.02)", Reported(Goal::AtMost), PERFORMANCE_MD, "tests/performance.rs"),
     // Phase 2 and strength reduction on the slip-surface slope (tests/performance.rs; the SRM rows
     // are measured by `cdem perf` only, skipped in the tests and in `cdem reproduce`).
@@ -1180,6 +1183,7 @@ pub fn rows() -> Vec<RowSpec> {
     all.extend_from_slice(&ROWS[6..]);
     all.extend_from_slice(RUNOUT_ROWS);
     all.extend_from_slice(FSERROR_ROWS);
+    all.extend_from_slice(LAWS_ROWS);
     all
 }
 

@@ -202,6 +202,7 @@ fn more_rows(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Err
     progress("plastic blocks: the paper slope with every interface breakable, by strength reduction (about 1 min)");
     rep.checks.push(suite::plastic::paper_slope_row()?.row);
     joint_sets(rep, progress)?;
+    laws(rep, progress)?;
     water(rep, progress)?;
     progress("analytic ensemble");
     rep.checks.extend(suite::ensemble::segment(root)?.rows);
@@ -318,6 +319,19 @@ fn joint_sets(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Er
         let k = crate::app::kinematics::kinematics(Path::new(geometry), &dir)?;
         let _ = writeln!(rep.md, "Kinematic analysis of `{geometry}`:\n\n{}", k.table);
         rep.figure(&format!("{name}: stereonet"), &format!("joints/{name}-kinematics/stereonet.png"));
+    }
+    Ok(())
+}
+
+/// The joint laws (no paper figure): a Barton-Bandis joint's direct shear
+/// test against its envelope, and plane failure on one by `cdem srm` against
+/// the closed form, dry and with the crack full.
+fn laws(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result<(), Error> {
+    progress("joint laws: Barton-Bandis direct shear and plane failure (cdem srm against the closed forms)");
+    let _ = writeln!(rep.md, "## Joint laws: Barton-Bandis (references/laws.md)\n");
+    rep.checks.extend(suite::laws::shear_rows());
+    for (case, closed, id) in suite::laws::plane_cases() {
+        rep.checks.push(suite::laws::plane(case, closed, id)?.0);
     }
     Ok(())
 }

@@ -6,8 +6,9 @@
 
 use serde::Deserialize;
 
+use crate::physics::joint::JointProps;
 pub use crate::physics::joint::Softening;
-use crate::physics::joint::{JointProps, JointStrength};
+pub use crate::physics::joint::StrengthSection;
 use crate::physics::material::RockStrength;
 
 /// The model's inputs, borrowed from a scene (or made by hand in a test).
@@ -141,34 +142,7 @@ impl JointSection {
     /// neither gives one: a merged interface, which has no springs).
     pub fn props(&self, default: &JointSection) -> JointProps {
         let [e, g, l] = self.moduli(default).map(|v| v.unwrap_or(f64::NAN));
-        JointProps { normal_modulus: e, shear_modulus: g, thickness: l, strength: self.strength.map(Into::into) }
-    }
-}
-
-/// Strength of a breakable structural plane.
-#[derive(Debug, Clone, Copy, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct StrengthSection {
-    /// Tensile strength `T` (Pa), eq. 17.
-    pub tensile: f64,
-    /// Cohesion `c` (Pa), eq. 18.
-    pub cohesion: f64,
-    /// Friction angle `phi` (degrees, in [0, 90)), eq. 18.
-    pub friction_angle: f64,
-    /// What failure does to the strength: `"brittle"` (default, the paper's:
-    /// cohesion and tensile strength lost) or `"ductile"` (kept).
-    #[serde(default)]
-    pub softening: Softening,
-}
-
-impl From<StrengthSection> for JointStrength {
-    fn from(s: StrengthSection) -> Self {
-        Self {
-            tensile: s.tensile,
-            cohesion: s.cohesion,
-            tan_phi: s.friction_angle.to_radians().tan(),
-            softening: s.softening,
-        }
+        JointProps { normal_modulus: e, shear_modulus: g, thickness: l, strength: self.strength.map(|s| s.strength()) }
     }
 }
 

@@ -10,7 +10,7 @@
 //! | 16  | [`spring::spring_stiffness`]: `K_n = E_j A / L`, `K_s = G_j A / L` |
 //! | 17  | [`spring::tension_cutoff`]: `F_n >= T A` -> `F_n = F_s = 0` |
 //! | 18  | [`spring::mohr_coulomb`]: `|F_s| > P tan(phi) + c A` -> `|F_s| = P tan(phi)` |
-//! | 15, 17-18 | [`joint::CoulombJoint`]: one breakable spring with its history (brittle or ductile) |
+//! | 15, 17-18 | [`joint::Coulomb`]: one breakable spring with its history (brittle or ductile); [`joint::BartonBandis`] the Barton-Bandis joint |
 //! | runout | [`corotation::corotated_force`]: `f = R K_e u'`, a block's rotation taken out |
 //! | runout | [`contact::contact_force`]: a vertex-face penalty and Coulomb slider |
 //!

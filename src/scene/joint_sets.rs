@@ -37,7 +37,6 @@ use serde::Deserialize;
 
 use crate::error::{Error, SceneError};
 use crate::model::spec::StrengthSection;
-use crate::physics::joint::Softening;
 
 /// At most this many planes in one set (a spacing far below the model's size
 /// is a typo, not a rock mass).
@@ -218,14 +217,8 @@ impl Geometry {
             positive(&key("shear_modulus"), j.shear_modulus)?;
             positive(&key("thickness"), j.thickness)?;
             if let Some(st) = j.strength {
-                if !(st.friction_angle >= 0.0 && st.friction_angle < 90.0) {
-                    return bad(&key("strength.friction_angle"), "must be in [0, 90) degrees");
-                }
-                if !(st.cohesion.is_finite() && st.cohesion >= 0.0) {
-                    return bad(&key("strength.cohesion"), "must be finite and >= 0");
-                }
-                if !(st.tensile.is_finite() && st.tensile >= 0.0) {
-                    return bad(&key("strength.tensile"), "must be finite and >= 0");
+                if let Err((name, why)) = st.check() {
+                    return bad(&key(&format!("strength.{name}")), &why);
                 }
             }
             self.set_planes(i)?;
@@ -511,15 +504,7 @@ Return
                 j.thickness
             );
             if let Some(s) = j.strength {
-                let soft = match s.softening {
-                    Softening::Brittle => "brittle",
-                    Softening::Ductile => "ductile",
-                };
-                let _ = writeln!(
-                    t,
-                    "strength = {{ tensile = {:?}, cohesion = {:?}, friction_angle = {:?}, softening = \"{soft}\" }}",
-                    s.tensile, s.cohesion, s.friction_angle
-                );
+                let _ = writeln!(t, "strength = {}", s.to_toml());
             }
             t.push('\n');
         }

@@ -193,10 +193,11 @@ impl RunoutSection {
         // The weakest joint's friction: [joints]' if it has a strength, else the
         // lowest of the interfaces'.
         let joints = model.interfaces.first().and_then(|i| i.props.strength);
-        let weakest = model.interfaces.iter().filter_map(|i| i.props.strength).map(|s| s.tan_phi).reduce(f64::min);
+        let weakest =
+            model.interfaces.iter().filter_map(|i| i.props.strength).map(|s| s.residual_tan_phi()).reduce(f64::min);
         let friction = c
             .friction_angle
-            .or_else(|| joints.map(|s| s.tan_phi).or(weakest).map(|t| t.atan().to_degrees()))
+            .or_else(|| joints.map(|s| s.residual_tan_phi()).or(weakest).map(|t| t.atan().to_degrees()))
             .ok_or_else(|| {
                 SceneError::invalid(
                     "runout.contact.friction_angle",

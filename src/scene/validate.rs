@@ -22,22 +22,7 @@ fn stiffness_given(key: &str, [e, g, l]: [Option<f64>; 3]) -> Result<(), SceneEr
 }
 
 fn strength(key: &str, st: &super::StrengthSection) -> Result<(), SceneError> {
-    for (name, v) in [("tensile", st.tensile), ("cohesion", st.cohesion)] {
-        if !(v.is_finite() && v >= 0.0) {
-            return Err(SceneError::invalid(
-                format!("{key}.strength.{name}"),
-                format!("must be finite and >= 0, got {v}"),
-            ));
-        }
-    }
-    let phi = st.friction_angle;
-    if !(phi.is_finite() && (0.0..90.0).contains(&phi)) {
-        return Err(SceneError::invalid(
-            format!("{key}.strength.friction_angle"),
-            format!("must be in [0, 90) degrees, got {phi}"),
-        ));
-    }
-    Ok(())
+    st.check().map_err(|(name, why)| SceneError::invalid(format!("{key}.strength.{name}"), why))
 }
 
 fn rock_strength(key: &str, st: &super::RockStrengthSection) -> Result<(), SceneError> {

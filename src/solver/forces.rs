@@ -13,7 +13,7 @@ use rayon::prelude::*;
 use crate::model::{Model, ELEMENT_SLOT};
 use crate::physics::damping::spring_dashpot;
 use crate::physics::element::element_force;
-use crate::physics::joint::{JointLaw, JointState};
+use crate::physics::joint::JointState;
 use crate::physics::plastic::{
     add_pressure_force, add_stress_force, cell_strains, cell_volumetric_strain, deviatoric, plastic_element_force,
     PlasticCells, RockState, Volumetric,
@@ -250,12 +250,11 @@ pub struct Dashpots<'a> {
 }
 
 /// Failure phase: breakable springs (a strength in `joints`) take their
-/// force from the joint `law` (eq. 17-18) and update their own slip and
+/// force from their joint law (eq. 17-18 for Coulomb joints) and update their own slip and
 /// status; the others stay elastic. With `dashpots`, their forces come from
 /// the same pass, which reads each spring once.
 pub fn spring_forces_with_failure(
     model: &Model,
-    law: &impl JointLaw,
     joints: &JointState,
     state: &mut SpringState,
     u: &[f64],
@@ -265,10 +264,7 @@ pub fn spring_forces_with_failure(
     let sp = &model.springs;
     let force = |s: usize, slip: &mut _, status: &mut _| {
         let d = relative_displacement(u, sp.a[s] as usize, sp.b[s] as usize);
-        match &joints.strength[s] {
-            Some(st) => law.force(&sp.get(s), d, st, slip, status),
-            None => spring_contact_force(sp.kn[s], sp.ks[s], sp.normal[s], d, *slip, *status),
-        }
+        joints.force(s, &sp.get(s), d, slip, status)
     };
     let springs = f_spring.par_iter_mut().zip(state.slip.par_iter_mut()).zip(state.status.par_iter_mut());
     match dashpots {

@@ -38,7 +38,7 @@ use crate::error::SolveError;
 use crate::model::Model;
 use crate::model::ELEMENT_SLOT;
 use crate::physics::damping::{dashpot_beta, rayleigh_omega2, rayleigh_omega2_with, tangent_numerator};
-use crate::physics::joint::{CoulombJoint, JointState};
+use crate::physics::joint::JointState;
 use crate::physics::plastic::RockState;
 use crate::physics::spring::SpringState;
 use block_mass::BlockMass;
@@ -259,7 +259,6 @@ impl Solver {
         }
         let dashpots = self.dashpots_on();
         if self.failure {
-            let law = &CoulombJoint;
             let dash = dashpots.then_some(forces::Dashpots {
                 v: &state.v,
                 beta: self.dashpot_beta,
@@ -267,7 +266,6 @@ impl Solver {
             });
             forces::spring_forces_with_failure(
                 model,
-                law,
                 &state.joints,
                 &mut state.springs,
                 &state.u,

@@ -37,12 +37,7 @@ pub fn segments(key: &str) -> Option<Vec<(&str, Option<usize>)>> {
 type Segs<'k> = [(&'k str, Option<usize>)];
 
 fn strength<'a>(s: &'a mut StrengthSection, field: &str) -> Option<&'a mut f64> {
-    match field {
-        "tensile" => Some(&mut s.tensile),
-        "cohesion" => Some(&mut s.cohesion),
-        "friction_angle" => Some(&mut s.friction_angle),
-        _ => None,
-    }
+    s.number_mut(field)
 }
 
 fn analysis<'a>(a: &'a mut AnalysisSpec, segs: &Segs) -> Option<&'a mut f64> {

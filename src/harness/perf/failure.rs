@@ -205,10 +205,10 @@ pub fn srm_scene(root: &Path, softening: Softening) -> Result<Scene, Error> {
     failure.max_steps = None;
     failure.sliding_displacement = None;
     for strength in scene.interface.iter_mut().filter_map(|i| i.strength.as_mut()) {
-        strength.softening = softening;
+        *strength.softening_mut() = softening;
     }
     if let Some(s) = scene.joints.strength.as_mut() {
-        s.softening = softening;
+        *s.softening_mut() = softening;
     }
     Ok(scene)
 }

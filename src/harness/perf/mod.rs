@@ -43,6 +43,7 @@ pub mod damping;
 pub mod ensemble;
 pub mod failure;
 pub mod headline;
+pub mod laws;
 pub mod memory;
 pub mod pyslope;
 pub mod rows;
@@ -165,6 +166,8 @@ pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn 
         }
         false => Vec::new(),
     };
+    progress("joint-law cost");
+    let law_row = laws::spring_law_row(&laws::spring_law_cost(root, 10)?);
     progress("checkpoint cost");
     let ck = checkpoint::checkpoint_cost(root, &out.join("checkpoint"), 5)?;
     let mut md = write_report(out, &head, &failure, ensemble.as_ref(), &damping, &scaling)?;
@@ -176,6 +179,14 @@ pub fn run_perf(root: &Path, out: &Path, opts: &PerfOptions, progress: &mut dyn 
         row.reference,
         row.status(),
         row.note
+    ));
+    md.push_str(&format!(
+        "\n## Joint-law cost\n\n`{}`: {:.3} (goal <= {}; {:?}): {}\n",
+        law_row.id,
+        law_row.ours,
+        law_row.reference,
+        law_row.status(),
+        law_row.note
     ));
     crate::output::write_atomic(&out.join("perf.md"), md.as_bytes())?;
     if !trials.is_empty() {

@@ -10,6 +10,7 @@ pub mod ensemble;
 pub mod extreme;
 pub mod fserror;
 pub mod joints;
+pub mod laws;
 pub mod lem_water;
 pub mod meshes;
 pub mod plastic;

@@ -254,7 +254,7 @@ pub fn static_start(model: &Model, on: bool) -> Result<State, Error> {
     }
     let mut held = State::new(model);
     let given = held.joints.clone();
-    for s in held.joints.strength.iter_mut().flatten() {
+    for s in held.joints.strength.iter_mut().flatten().filter_map(|s| s.coulomb_mut()) {
         s.tan_phi = s.tan_phi.max(10.0);
     }
     if !relax(&mut held, true)? {

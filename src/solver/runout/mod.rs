@@ -36,8 +36,8 @@ use crate::model::union_find::UnionFind;
 use crate::model::Model;
 use crate::physics::contact::{contact_force, ContactHistory, ContactLaw};
 use crate::physics::corotation::{corotated_force_from, rotate, Mat3, IDENTITY};
-use crate::physics::joint::{CoulombJoint, JointLaw, JointState};
-use crate::physics::spring::{spring_contact_force, Spring, SpringState, SpringStatus};
+use crate::physics::joint::JointState;
+use crate::physics::spring::{Spring, SpringState, SpringStatus};
 use contact::{block_box, sweep, vertex_face, Faces};
 
 /// Above this many blocks the broad phase uses the uniform grid instead of
@@ -462,8 +462,7 @@ impl Runout {
         let el = &model.elements;
         let mut changed = self.body.is_empty();
         for s in 0..model.springs.len() {
-            let bonds = springs.status[s] == SpringStatus::Intact
-                && joints.strength[s].is_none_or(|st| st.tensile > 0.0 || st.cohesion > 0.0);
+            let bonds = springs.status[s] == SpringStatus::Intact && joints.strength[s].is_none_or(|st| st.bonds());
             if self.bonded[s] && !bonds {
                 self.release(model, springs, s, u);
                 changed = true;
@@ -524,7 +523,7 @@ impl Runout {
         let (kn, ks, tan_phi) = match self.pair_interface.get(&(a.min(b), a.max(b))) {
             Some(&i) => {
                 let p = &model.interfaces[i as usize].props;
-                let tan_phi = p.strength.map_or(d.friction_deg.to_radians().tan(), |s| s.tan_phi);
+                let tan_phi = p.strength.map_or(d.friction_deg.to_radians().tan(), |s| s.residual_tan_phi());
                 match p.normal_modulus.is_finite() {
                     true => (p.normal_modulus / p.thickness, p.shear_modulus / p.thickness, tan_phi),
                     false => (d.normal_stiffness, d.shear_stiffness, tan_phi),
@@ -678,14 +677,13 @@ impl Runout {
 
         lap(0, &mut self.stage_seconds);
         // 2. Joints: bonded springs, the normal turned with block a.
-        let law = CoulombJoint;
         let sp = &model.springs;
         let mut spring_energy = 0.0;
         let mut input = 0.0;
         // Each spring's force, the work put in over the step (trapezoid) and
         // what it stores now, in parallel; then summed in spring order.
         let (bonded, rotations, node_elems, dt) = (&self.bonded, &self.rotations, &self.node_elems, self.dt);
-        let (u, v, strength) = (&st.u, &st.v, &st.joints.strength);
+        let (u, v, joints) = (&st.u, &st.v, &st.joints);
         let per_spring: Vec<([f64; 3], f64, f64)> = st
             .springs
             .slip
@@ -701,10 +699,7 @@ impl Runout {
                 let normal = rotate(&rotations[node_elems[a][0].0 as usize], sp.normal[s]);
                 let spring = Spring { kn: sp.kn[s], ks: sp.ks[s], normal, area: sp.area[s] };
                 let d = [0, 1, 2].map(|k| u[3 * b + k] - u[3 * a + k]);
-                let fa = match &strength[s] {
-                    Some(strength) => law.force(&spring, d, strength, slip, status),
-                    None => spring_contact_force(sp.kn[s], sp.ks[s], normal, d, *slip, *status),
-                };
+                let fa = joints.force(s, &spring, d, slip, status);
                 let dd = [0, 1, 2].map(|k| (v[3 * b + k] - v[3 * a + k]) * dt);
                 let input = (0..3).map(|k| 0.5 * (prev[k] + fa[k]) * dd[k]).sum::<f64>();
                 *prev = fa;
