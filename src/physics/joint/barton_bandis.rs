@@ -48,8 +48,9 @@ pub struct BartonBandisStrength {
     pub phi_r: f64,
     /// Cap on the total friction angle (rad).
     pub phi_max: f64,
-    /// `tan(phi_r)`.
+    /// `tan(phi_r)`, `tan(phi_max)`.
     pub tan_phi_r: f64,
+    pub tan_phi_max: f64,
     /// Tensile strength `T` (Pa), already divided by `factor`.
     pub tensile: f64,
     /// Strength-reduction factor `F` (1 unreduced): the envelope is divided by it.
@@ -67,6 +68,22 @@ impl BartonBandisStrength {
         }
         let roughness = (self.jrc * (self.jcs / sigma_n).log10()).max(0.0).to_radians();
         sigma_n * (self.phi_r + roughness).min(self.phi_max).tan() / self.factor
+    }
+}
+
+impl BartonBandisStrength {
+    /// A lower bound of `peak(sigma_n) / sigma_n` without a logarithm or a
+    /// tangent (the cheap test that most springs above their residual pass):
+    /// `tan(phi_r + R) >= tan(phi_r) + R` for angles below 90 degrees, the
+    /// roughness `R = JRC log10(JCS / sigma_n)` (rad) bounded below through
+    /// `ln(x) >= floor(log2(x)) ln 2`, the exponent of `x` read from its bits;
+    /// capped at `tan(phi_max)`.
+    #[inline]
+    fn lower_bound(&self, sigma_n: f64) -> f64 {
+        let x = self.jcs / sigma_n;
+        let octaves = if x >= 1.0 && x.is_finite() { ((x.to_bits() >> 52) & 0x7ff) as f64 - 1023.0 } else { 0.0 };
+        let roughness = self.jrc * (octaves * std::f64::consts::LN_2 / std::f64::consts::LN_10).to_radians();
+        (self.tan_phi_r + roughness).min(self.tan_phi_max) / self.factor
     }
 }
 
@@ -131,6 +148,7 @@ impl BartonBandisSection {
             phi_r,
             phi_max: self.max_friction_angle.to_radians(),
             tan_phi_r: phi_r.tan(),
+            tan_phi_max: self.max_friction_angle.to_radians().tan(),
             tensile: self.tensile,
             factor: 1.0,
             softening: self.softening,
@@ -200,7 +218,15 @@ impl JointLaw for BartonBandis {
         if fs_abs <= residual {
             return [0, 1, 2].map(|i| f_n * sp.normal[i] + f_s[i]);
         }
-        let limit = if peak { sp.area * p.peak(compression / sp.area) } else { residual };
+        if peak && fs_abs <= compression * p.lower_bound(compression / sp.area) {
+            return [0, 1, 2].map(|i| f_n * sp.normal[i] + f_s[i]);
+        }
+        let limit = match peak {
+            false => residual,
+            // Past the cap's friction, a brittle joint slips whatever its roughness.
+            true if brittle && fs_abs > compression * p.tan_phi_max / p.factor => residual,
+            true => sp.area * p.peak(compression / sp.area),
+        };
         if fs_abs <= limit {
             return [0, 1, 2].map(|i| f_n * sp.normal[i] + f_s[i]);
         }
@@ -231,17 +257,18 @@ impl JointLaw for BartonBandis {
     }
 
     fn words(p: &BartonBandisStrength) -> Vec<f64> {
-        vec![p.jrc, p.jcs, p.phi_r, p.phi_max, p.tan_phi_r, p.tensile, p.factor, p.softening.word()]
+        vec![p.jrc, p.jcs, p.phi_r, p.phi_max, p.tan_phi_r, p.tan_phi_max, p.tensile, p.factor, p.softening.word()]
     }
 
     fn from_words(w: &[f64]) -> Option<BartonBandisStrength> {
         match *w {
-            [jrc, jcs, phi_r, phi_max, tan_phi_r, tensile, factor, soft] => Some(BartonBandisStrength {
+            [jrc, jcs, phi_r, phi_max, tan_phi_r, tan_phi_max, tensile, factor, soft] => Some(BartonBandisStrength {
                 jrc,
                 jcs,
                 phi_r,
                 phi_max,
                 tan_phi_r,
+                tan_phi_max,
                 tensile,
                 factor,
                 softening: Softening::from_word(soft)?,
@@ -278,6 +305,11 @@ mod tests {
         assert!((j.peak(200e6) - 200e6 * 30f64.to_radians().tan()).abs() < 1e-3);
         assert_eq!(j.peak(0.0), 0.0);
         assert_eq!(j.peak(-1.0), 0.0);
+        // The cheap bound is below the envelope everywhere.
+        for k in 0..400 {
+            let s = 10f64.powf(-1.0 + 0.025 * k as f64) * 1e3;
+            assert!(j.lower_bound(s) * s <= j.peak(s) * (1.0 + 1e-15), "{s}");
+        }
         // Reduced by 2: half the envelope.
         let r = BartonBandis::reduced(&j, 2.0);
         assert!((r.peak(1e6) - 0.5 * j.peak(1e6)).abs() < 1e-6);
