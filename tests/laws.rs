@@ -24,9 +24,14 @@ fn root() -> &'static Path {
 fn the_closed_forms_equal_the_quoted_numbers() {
     let at_1 = reg::BB_SHEAR_JOINT.tau(1e6);
     assert!((at_1 - reg::BB_SHEAR_AT_1MPA_QUOTED).abs() < 0.5e3, "{at_1}");
-    let [(_, dry, _), (_, wet, _)] = laws::plane_cases();
-    assert!((dry - 1.36960).abs() < 1e-5, "{dry}");
-    assert!((wet - 0.73028).abs() < 1e-5, "{wet}");
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
+    for (k, s) in reg::BB_SHEAR_STRESSES.into_iter().enumerate() {
+        assert!(close(reg::BB_SHEAR_JOINT.tau(s), reg::BB_SHEAR_PEAKS[k]), "{s}");
+    }
+    assert!(close(1e6 * 30f64.to_radians().tan(), reg::BB_SHEAR_RESIDUAL_1MPA));
+    let [dry, wet] = laws::plane_closed_forms();
+    assert!(close(dry, reg::BB_PLANE_FS_DRY) && close(wet, reg::BB_PLANE_FS_WET), "{dry} {wet}");
+    assert!((dry - 1.36960).abs() < 1e-5 && (wet - 0.73028).abs() < 1e-5, "{dry} {wet}");
     // The conventions: the cap at low stress, no negative roughness above JCS.
     let j = reg::BB_SHEAR_JOINT;
     assert!((j.tau(1.0) - 70f64.to_radians().tan()).abs() < 1e-12);

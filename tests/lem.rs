@@ -92,6 +92,28 @@ fn acads_1a_spencer_agrees_with_slide_and_is_reported_against_the_referee() {
     );
 }
 
+/// ACADS 1(c), three soils: Bishop and Spencer against Slide2, and the
+/// default 50 slices against 400 (issue 58 item 6: within 0.3 %, the
+/// slice ends at the layers).
+#[test]
+fn acads_1c_layers_agree_with_slide_and_with_400_slices() {
+    let (r50, r400) = cdem::harness::suite::lem_layers::acads_1c().unwrap();
+    let rows = cdem::harness::validation::acads_1c_rows(&r50, &r400);
+    for r in &rows {
+        println!(
+            "{}: ours {:.5}, reference {:.5}, error {:+.3} %",
+            r.id,
+            r.ours,
+            r.reference,
+            100.0 * (r.ours - r.reference) / r.reference
+        );
+    }
+    cdem::harness::report::record("lem_acads_1c", &rows);
+    for r in rows.iter().filter(|r| r.id != "lem/acads-1c/bishop-vs-referee") {
+        assert!(r.passed(), "{}: {:?} (ours {}, reference {})", r.id, r.defect, r.ours, r.reference);
+    }
+}
+
 #[test]
 fn acads_1a_method_ordering_is_textbook() {
     // Ordinary (no interslice forces) is conservative for phi > 0; Bishop

@@ -90,6 +90,11 @@ fn runout_is_bit_for_bit_the_same_on_one_and_two_threads() {
     assert_rows("runout_determinism", &[runout::determinism_row().unwrap()]);
 }
 
+#[test]
+fn runout_with_water_is_bit_for_bit_the_same_on_one_and_two_threads() {
+    assert_rows("runout_determinism_water", &[runout::determinism_water_row().unwrap()]);
+}
+
 /// A scene of `verification/runout/` with extra TOML, written to a temporary
 /// directory (its mesh by absolute path).
 fn scene_with(name: &str, extra: &str) -> std::path::PathBuf {

@@ -3,14 +3,17 @@
 # compared with the same ensemble in one process. Run from the repository root as root:
 #   scripts/slurm/ensemble-demo.sh [OUTDIR [CASE...]]
 # CASE: lem, cdem (the 2026-12-01 record), slip (the slip-surface slope, 8 members,
-# 2 array tasks), slip-srm (the same with cdem srm per member, 4 members); default all.
+# 2 array tasks), slip-srm (the same with cdem srm per member, 4 members); requeue (the
+# cdem case with array task 0 killed by `scontrol requeue` once its journal holds a
+# record: it runs again with --resume and the merged members.jsonl must be the
+# one-process file, byte for byte); default all.
 # Prints what references/ensemble.md records, with the load average before and after
 # each case (the machine may be shared). Needs: cargo; installs slurm-wlm, munge.
 set -euo pipefail
 out=${1:-out/slurm-demo}
 shift || true
 cases=("$@")
-[ ${#cases[@]} -gt 0 ] || cases=(lem cdem slip slip-srm)
+[ ${#cases[@]} -gt 0 ] || cases=(lem cdem slip slip-srm requeue)
 here=$(cd "$(dirname "$0")" && pwd)
 "$here/single-node.sh" start >/dev/null
 cargo build --release --quiet
@@ -46,6 +49,30 @@ run_case() { # name input members shards
     [ "$same" = identical ]
 }
 
+requeue_case() { # input members shards
+    local input=$1 members=$2 shards=$3 dir="$out/requeue"
+    mkdir -p "$dir"
+    local jid mid journal="$dir/shard-0/members-0-of-$3.jsonl"
+    jid=$(sbatch --parsable --chdir="$PWD" --output="$dir/slurm-%A_%a.out" --array=0-$((shards - 1)) \
+        "$here/ensemble.sbatch" "$input" "$members" "$dir" 1)
+    # Task 0 running with at least one record in its journal, not yet done.
+    until [ -s "$journal" ] || ! squeue -h -j "${jid}_0" | grep -q .; do sleep 0.2; done
+    local before
+    before=$(wc -l <"$journal" 2>/dev/null || echo 0)
+    scontrol requeue "${jid}_0"
+    echo "requeue: task ${jid}_0 killed and requeued with $before of its records in its journal"
+    mid=$(sbatch --parsable --chdir="$PWD" --output="$dir/merge-%j.out" --dependency=afterok:"$jid" \
+        "$here/merge.sbatch" "$dir")
+    while squeue -h -j "$jid,$mid" 2>/dev/null | grep -q .; do sleep 1; done
+    "$CDEM" ensemble "$input" --members "$members" --seed 1 --out "$dir/single" >/dev/null
+    local same
+    if cmp -s "$dir/merged/members.jsonl" "$dir/single/members.jsonl"; then same=identical; else same=DIFFER; fi
+    echo "requeue: task 0's log (its two starts):"
+    grep -h -E "resum|journal|members" "$dir"/slurm-"${jid}"_0.out | head -5 || true
+    echo "requeue: merged members.jsonl against one process: $same ($(wc -c <"$dir/single/members.jsonl") bytes)"
+    [ "$same" = identical ]
+}
+
 echo "slurm: $(sinfo --version), node $(hostname -s) with $(nproc) CPUs; $(uptime)"
 for c in "${cases[@]}"; do
     case $c in
@@ -53,8 +80,9 @@ for c in "${cases[@]}"; do
     cdem) run_case cdem verification/cases/slope/slope.toml 12 3 ;;
     slip) run_case slip verification/ensemble/paper-slope-slip.toml 8 2 ;;
     slip-srm) run_case slip-srm verification/ensemble/paper-slope-slip-srm.toml 4 2 ;;
+    requeue) requeue_case verification/cases/slope/slope.toml 12 3 ;;
     *)
-        echo "unknown case $c (lem, cdem, slip, slip-srm)" >&2
+        echo "unknown case $c (lem, cdem, slip, slip-srm, requeue)" >&2
         exit 2
         ;;
     esac

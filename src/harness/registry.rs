@@ -503,6 +503,30 @@ pub const ACADS_SLIDE_SPENCER: Reference = Reference {
     source: LEM_MD,
     what: "ACADS 1(a), Spencer in Rocscience Slide (verification manual, problem 1)",
 };
+/// ACADS 1(c) (three soils): the referee's safety factor.
+pub const ACADS_1C_REFEREE: Reference = Reference {
+    value: 1.39,
+    source: LEM_MD,
+    what: "ACADS (1989) problem 1(c), referee FS (as quoted by xslope's corpus)",
+};
+/// ACADS 1(c): Slide's Bishop simplified.
+pub const ACADS_1C_SLIDE_BISHOP: Reference = Reference {
+    value: 1.405,
+    source: LEM_MD,
+    what: "ACADS 1(c), Bishop simplified in Rocscience Slide2 (verification manual, problem 3, as quoted by xslope)",
+};
+/// ACADS 1(c): Slide's Spencer.
+pub const ACADS_1C_SLIDE_SPENCER: Reference = Reference {
+    value: 1.375,
+    source: LEM_MD,
+    what: "ACADS 1(c), Spencer in Rocscience Slide2 (verification manual, problem 3, as quoted by xslope)",
+};
+/// ACADS 1(c)'s LEM input.
+pub const LEM_ACADS_1C: &str = "verification/lem/acads-1c.toml";
+/// Issue 58 item 6: on a layered section the searched factor with the
+/// default 50 slices within 0.3 % of the one with 400.
+pub const TOL_LEM_SLICES: f64 = 0.003;
+
 /// Taylor's stability number `N = c / (F gamma H)` of a purely cohesive slope
 /// of 60 deg (its critical circle a toe circle), read from his chart.
 pub const TAYLOR_N_60: Reference = Reference {
@@ -994,6 +1018,7 @@ const ENSEMBLE_PERF_SKIP: &str = "timed ensembles, measured by cdem perf (refere
 
 const COLUMN_SPRINGS_CASE: &str = "column, springs E_j/L=1e11";
 const ACADS_CASE: &str = "ACADS 1(a)";
+const ACADS_1C_CASE: &str = "ACADS 1(c), three soils";
 const SLOPE_VS_FEM: &str = "paper slope, CDEM vs FEM";
 const SLIP_CASE: &str = "paper slope, slip circle";
 const PHASE2_CASE: &str = "performance: slip-surface slope, phase 2";
@@ -1032,6 +1057,10 @@ pub const ROWS: &[RowSpec] = &[
     spec("slope/fem-vs-ansys/max-abs-uz", "paper slope, FEM vs ANSYS (paper)", "max |u_z| (m)", Reported(Goal::Within(GOAL_VS_PAPER)), PAPER_MD, "tests/slope_elastic.rs").with_reference(ANSYS_MAX_ABS_UZ.value),
     spec("slope/fem-vs-ansys/min-szz", "paper slope, FEM vs ANSYS (paper)", "min sigma_zz (Pa)", Reported(Goal::Within(GOAL_VS_PAPER)), PAPER_MD, "tests/slope_elastic.rs").with_reference(ANSYS_MIN_SZZ.value),
     // Limit equilibrium (tests/lem.rs).
+    spec("lem/acads-1c/bishop-vs-slide", ACADS_1C_CASE, "Bishop FS (search, 50 slices) vs Slide", Asserted(TOL_ACADS), LEM_MD, "tests/lem.rs").with_reference(ACADS_1C_SLIDE_BISHOP.value),
+    spec("lem/acads-1c/spencer-vs-slide", ACADS_1C_CASE, "Spencer FS (search, 50 slices) vs Slide", Asserted(TOL_ACADS), LEM_MD, "tests/lem.rs").with_reference(ACADS_1C_SLIDE_SPENCER.value),
+    spec("lem/acads-1c/bishop-vs-referee", ACADS_1C_CASE, "Bishop FS (search, 50 slices) vs the ACADS referee", Reported(Goal::Within(TOL_ACADS)), LEM_MD, "tests/lem.rs").with_reference(ACADS_1C_REFEREE.value),
+    spec("lem/acads-1c/slices-50-vs-400", ACADS_1C_CASE, "Bishop FS of the search with 50 slices vs 400 (consistency: our own code; slice ends at the layers)", Asserted(TOL_LEM_SLICES), LEM_MD, "tests/lem.rs"),
     spec("lem/acads/bishop-vs-slide", ACADS_CASE, "Bishop FS vs Slide", Asserted(TOL_ACADS), LEM_MD, "tests/lem.rs").with_reference(ACADS_SLIDE_BISHOP.value),
     spec("lem/acads/bishop-vs-referee", ACADS_CASE, "Bishop FS vs referee", Asserted(TOL_ACADS), LEM_MD, "tests/lem.rs").with_reference(ACADS_REFEREE.value),
     spec("lem/acads/spencer-vs-slide", ACADS_CASE, "Spencer FS vs Slide", Asserted(TOL_ACADS), LEM_MD, "tests/lem.rs").with_reference(ACADS_SLIDE_SPENCER.value),

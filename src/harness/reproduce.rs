@@ -493,6 +493,8 @@ fn limit_equilibrium(rep: &mut Report, progress: &mut dyn FnMut(&str)) -> Result
     let acads = crate::lem::analyse(&reg::LEM_ACADS_1A.lem_input()?)?;
     let paper = crate::lem::analyse(&reg::LEM_PAPER_SLOPE.lem_input()?)?;
     rep.checks.extend(validation::acads_rows(&acads));
+    let (acads_1c, acads_1c_400) = crate::harness::suite::lem_layers::acads_1c()?;
+    rep.checks.extend(validation::acads_1c_rows(&acads_1c, &acads_1c_400));
     rep.checks.push(validation::paper_lem_row(&paper));
     rep.checks.extend(crate::harness::suite::taylor::rows()?);
     rep.checks.extend(crate::harness::suite::lem_water::rows()?);

@@ -138,6 +138,17 @@ pub fn acads_rows(r: &LemResult) -> Vec<Check> {
     ]
 }
 
+/// ACADS 1(c)'s rows from its search with the default 50 slices and with 400.
+pub fn acads_1c_rows(r50: &LemResult, r400: &LemResult) -> Vec<Check> {
+    let (b, s, t) = (r50.fs.bishop.unwrap_or(f64::NAN), r50.fs.spencer.unwrap_or(f64::NAN), r50.wall_s);
+    vec![
+        row("lem/acads-1c/bishop-vs-slide").value(b, reg::ACADS_1C_SLIDE_BISHOP.value, t),
+        row("lem/acads-1c/spencer-vs-slide").value(s, reg::ACADS_1C_SLIDE_SPENCER.value, t),
+        row("lem/acads-1c/bishop-vs-referee").value(b, reg::ACADS_1C_REFEREE.value, t),
+        row("lem/acads-1c/slices-50-vs-400").value(b, r400.fs.bishop.unwrap_or(f64::NAN), t + r400.wall_s),
+    ]
+}
+
 /// The paper slope's Bishop minimum against the paper's LEM.
 pub fn paper_lem_row(r: &LemResult) -> Check {
     row("lem/paper/bishop").value(r.fs.bishop.unwrap_or(f64::NAN), reg::PAPER_LEM_FS.value, r.wall_s)

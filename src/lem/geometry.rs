@@ -82,6 +82,8 @@ pub(crate) struct Slices {
     pub crack_z: f64,
     /// Scratch: z of zone-edge crossings in one column.
     column: Vec<f64>,
+    /// Scratch: the slice ends of a layered section ([`layered_ends`]).
+    ends: Vec<f64>,
     /// Scratch, at the `n + 1` slice ends: x, `u = x - xc`,
     /// `w = sqrt(r^2 - u^2)`, ground height.
     xb: Vec<f64>,
@@ -110,6 +112,7 @@ impl Slices {
             spencer_r: v(),
             spencer_d: v(),
             column: Vec::with_capacity(16),
+            ends: v(),
             xb: v(),
             ub: v(),
             wb: v(),
@@ -334,13 +337,18 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
     let b = (xe - xx) / n as f64;
     let (r, r2) = (c.r, c.r * c.r);
     let half_inv_r = 0.5 / r;
+    let homogeneous = f.homogeneous();
+    let eps_z = 1e-9 * f.height();
+    // A layered section's slices end where the arc changes material.
+    let mut ends = std::mem::take(&mut s.ends);
+    let layered = homogeneous.is_none() && layered_ends(f, c, xx, xe, n, eps_z, &mut ends);
     // Pass 1, slice ends: x, u = x - xc, w = sqrt(r^2 - u^2) (branch-free,
     // it vectorizes), then the ground height segment by segment.
     for v in [&mut s.xb, &mut s.ub, &mut s.wb, &mut s.zg] {
         sized(v, n + 1);
     }
     for (i, ((xb, ub), wb)) in s.xb.iter_mut().zip(s.ub.iter_mut()).zip(s.wb.iter_mut()).enumerate() {
-        let x = xx + i as f64 * b;
+        let x = if layered { ends[i] } else { xx + i as f64 * b };
         let u = x - c.xc;
         *xb = x;
         *ub = u;
@@ -411,7 +419,10 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
         if !(v[0] > xx && v[0] < xe) {
             continue;
         }
-        let j = (((v[0] - xx) / b) as usize).min(n - 1);
+        let j = match layered {
+            true => xb.partition_point(|&x| x <= v[0]).saturating_sub(1).min(n - 1),
+            false => (((v[0] - xx) / b) as usize).min(n - 1),
+        };
         for i in j.saturating_sub(1)..(j + 2).min(n) {
             let (x0, x1) = (xb[i], xb[i + 1]);
             if v[0] > x0 && v[0] < x1 {
@@ -421,9 +432,8 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
             }
         }
     }
+    s.ends = ends;
     // Pass 3: weights and strengths.
-    let homogeneous = f.homogeneous();
-    let eps_z = 1e-9 * f.height();
     let (mut deep, mut drive, mut gross, mut resist) = (false, 0.0, 0.0f64, 0.0);
     for v in [&mut s.u, &mut s.spencer_r, &mut s.spencer_d] {
         sized(v, n);
@@ -515,6 +525,67 @@ pub(crate) fn fill_slices(f: &Frame, c: Circle, n: usize, lim: Limits, s: &mut S
     s.drive = drive;
     s.resist_ordinary = resist;
     Ok(())
+}
+
+/// The slice ends of a layered section (Slide's rule: every base in one
+/// material): into `ends` the `n + 1` ends from `xx` to `xe`, with an end
+/// wherever the arc's material changes, found by sampling the arc at `8 n`
+/// points (a zone the arc crosses for less than `(xe - xx) / 8 n` may be
+/// missed) and bisecting each change to `1e-9` of the width; the runs
+/// between two such ends get slices of equal width, their number in
+/// proportion to the run's length (at least one each, by largest remainder).
+/// False (the ends are the uniform ones) when the arc stays in one material
+/// or crosses more boundaries than it has slices.
+fn layered_ends(f: &Frame, c: Circle, xx: f64, xe: f64, n: usize, eps_z: f64, ends: &mut Vec<f64>) -> bool {
+    let at = |x: f64| f.strength_at([x, z_arc(c, x) + eps_z]);
+    let width = xe - xx;
+    let m = 8 * n;
+    let h = width / m as f64;
+    ends.clear();
+    ends.push(xx);
+    let mut prev = (xx + 0.5 * h, at(xx + 0.5 * h));
+    for k in 1..m {
+        let x = xx + (k as f64 + 0.5) * h;
+        let here = at(x);
+        if here != prev.1 {
+            let (mut lo, mut hi) = (prev.0, x);
+            while hi - lo > 1e-9 * width {
+                let mid = 0.5 * (lo + hi);
+                if at(mid) == prev.1 {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            ends.push(0.5 * (lo + hi));
+        }
+        prev = (x, here);
+    }
+    ends.push(xe);
+    let runs = ends.len() - 1;
+    if runs == 1 || runs > n {
+        return false;
+    }
+    // Slices per run: the largest remainders of n w_k / W, at least one.
+    let share: Vec<f64> = ends.windows(2).map(|e| n as f64 * (e[1] - e[0]) / width).collect();
+    let mut count: Vec<usize> = share.iter().map(|&q| (q.floor() as usize).max(1)).collect();
+    while count.iter().sum::<usize>() < n {
+        let k = (0..runs).max_by(|&a, &b| (share[a] - count[a] as f64).total_cmp(&(share[b] - count[b] as f64)));
+        count[k.unwrap_or(0)] += 1;
+    }
+    while count.iter().sum::<usize>() > n {
+        let k = (0..runs)
+            .filter(|&k| count[k] > 1)
+            .max_by(|&a, &b| (count[a] as f64 - share[a]).total_cmp(&(count[b] as f64 - share[b])));
+        count[k.unwrap_or(0)] -= 1;
+    }
+    let cuts = std::mem::take(ends);
+    for (k, e) in cuts.windows(2).enumerate() {
+        let step = (e[1] - e[0]) / count[k] as f64;
+        ends.extend((0..count[k]).map(|i| e[0] + i as f64 * step));
+    }
+    ends.push(xe);
+    true
 }
 
 /// Where the arc meets a tension crack's line `z = ground - depth` (inside

@@ -9,7 +9,9 @@
 //! re-enters the level ground in front of the toe), the sliding mass is the
 //! crest-side run of the arc under the ground, and the rest of the arc is not
 //! part of it. The sliding mass is divided into `n`
-//! vertical slices of equal width `b` (default [`DEFAULT_SLICES`] = 50).
+//! vertical slices of equal width `b` (default [`DEFAULT_SLICES`] = 50); on
+//! a layered section the slices end where the arc changes material, each
+//! run between such ends cut into equal slices (`geometry::layered_ends`).
 //!
 //! Per slice `i` (math names): weight `W` (exact area between the ground and
 //! the arc times `gamma` for a homogeneous section; the column at the slice's

@@ -39,6 +39,12 @@ pub const BB_SHEAR_JOINT: BartonBandisJoint =
 /// The direct shear test's three normal stresses (Pa): the roughness term
 /// is 30, 20 and 10 deg.
 pub const BB_SHEAR_STRESSES: [f64; 3] = [0.1e6, 1e6, 10e6];
+/// The envelope at [`BB_SHEAR_STRESSES`] (Pa): `python3
+/// scripts/rock_slope_closed_forms.py` to the last digit (tests/laws.rs
+/// checks [`BartonBandisJoint::tau`] against them to 1e-12).
+pub const BB_SHEAR_PEAKS: [f64; 3] = [173205.08075688768, 1191753.59259421, 8390996.3117728];
+/// The residual at 1 MPa, `1 MPa tan(30 deg)` (Pa).
+pub const BB_SHEAR_RESIDUAL_1MPA: f64 = 577350.2691896257;
 /// Issue 58's quoted value at 1 MPa (Pa, 4 figures).
 pub const BB_SHEAR_AT_1MPA_QUOTED: f64 = 1.192e6;
 /// The law's peak and residual against the envelope (relative): the
@@ -48,6 +54,12 @@ pub const TOL_BB_SHEAR: f64 = 1e-12;
 /// The plane-failure joint (verification/laws/plane-barton-bandis.toml):
 /// JRC 6, JCS 40 MPa, phi_r 25 deg.
 pub const BB_PLANE_JOINT: BartonBandisJoint = BartonBandisJoint { jrc: 6.0, jcs: 40e6, phi_r_deg: 25.0, cap_deg: 70.0 };
+
+/// The plane-failure closed forms, dry and with the crack full
+/// ([`plane_failure_bb_fs`]; `python3 scripts/rock_slope_closed_forms.py`
+/// to the last digit, checked by tests/laws.rs to 1e-12).
+pub const BB_PLANE_FS_DRY: f64 = 1.3696020424390578;
+pub const BB_PLANE_FS_WET: f64 = 0.7302836580130894;
 
 /// Hoek & Bray's plane failure on a Barton-Bandis joint, the block's normal
 /// stress uniform: `FS = tau(sigma_n') A / (W sin(psi_p) + V cos(psi_p))`,
@@ -93,10 +105,10 @@ const SHEAR_CASE: &str = "direct shear of one Barton-Bandis joint, JRC 10, JCS 1
 /// The laws' rows (appended to the registry's).
 #[rustfmt::skip]
 pub const LAWS_ROWS: &[RowSpec] = &[
-    spec("laws/bb-shear-peak-0.1mpa", SHEAR_CASE, "peak shear stress at sigma_n 0.1 MPa (Pa)", Asserted(TOL_BB_SHEAR), LAWS_MD, "tests/laws.rs"),
-    spec("laws/bb-shear-peak-1mpa", SHEAR_CASE, "peak shear stress at sigma_n 1 MPa (Pa)", Asserted(TOL_BB_SHEAR), LAWS_MD, "tests/laws.rs"),
-    spec("laws/bb-shear-peak-10mpa", SHEAR_CASE, "peak shear stress at sigma_n 10 MPa (Pa)", Asserted(TOL_BB_SHEAR), LAWS_MD, "tests/laws.rs"),
-    spec("laws/bb-shear-residual-1mpa", SHEAR_CASE, "brittle: shear stress after the peak at sigma_n 1 MPa (Pa)", Asserted(TOL_BB_SHEAR), LAWS_MD, "tests/laws.rs"),
-    spec("laws/bb-plane-srm", "plane failure on a Barton-Bandis joint, dry crack (Hoek & Bray's slope)", "FS (strength reduction) vs closed form, uniform normal stress", Bounded(TOL_BB_PLANE_ABOVE, TOL_BB_PLANE_BELOW), LAWS_MD, "tests/laws.rs"),
-    spec("laws/bb-plane-wet-srm", "plane failure on a Barton-Bandis joint, crack full of water", "FS (strength reduction) vs closed form, uniform normal stress", Bounded(TOL_BB_PLANE_ABOVE, TOL_BB_PLANE_BELOW), LAWS_MD, "tests/laws.rs"),
+    spec("laws/bb-shear-peak-0.1mpa", SHEAR_CASE, "peak shear stress at sigma_n 0.1 MPa (Pa)", Asserted(TOL_BB_SHEAR), LAWS_MD, "tests/laws.rs").with_reference(BB_SHEAR_PEAKS[0]),
+    spec("laws/bb-shear-peak-1mpa", SHEAR_CASE, "peak shear stress at sigma_n 1 MPa (Pa)", Asserted(TOL_BB_SHEAR), LAWS_MD, "tests/laws.rs").with_reference(BB_SHEAR_PEAKS[1]),
+    spec("laws/bb-shear-peak-10mpa", SHEAR_CASE, "peak shear stress at sigma_n 10 MPa (Pa)", Asserted(TOL_BB_SHEAR), LAWS_MD, "tests/laws.rs").with_reference(BB_SHEAR_PEAKS[2]),
+    spec("laws/bb-shear-residual-1mpa", SHEAR_CASE, "brittle: shear stress after the peak at sigma_n 1 MPa (Pa)", Asserted(TOL_BB_SHEAR), LAWS_MD, "tests/laws.rs").with_reference(BB_SHEAR_RESIDUAL_1MPA),
+    spec("laws/bb-plane-srm", "plane failure on a Barton-Bandis joint, dry crack (Hoek & Bray's slope)", "FS (strength reduction) vs closed form, uniform normal stress", Bounded(TOL_BB_PLANE_ABOVE, TOL_BB_PLANE_BELOW), LAWS_MD, "tests/laws.rs").with_reference(BB_PLANE_FS_DRY),
+    spec("laws/bb-plane-wet-srm", "plane failure on a Barton-Bandis joint, crack full of water", "FS (strength reduction) vs closed form, uniform normal stress", Bounded(TOL_BB_PLANE_ABOVE, TOL_BB_PLANE_BELOW), LAWS_MD, "tests/laws.rs").with_reference(BB_PLANE_FS_WET),
 ];

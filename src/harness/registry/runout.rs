@@ -160,4 +160,5 @@ pub const RUNOUT_ROWS: &[RowSpec] = &[
     spec("runout/slope-slip-travel-angle", SLOPE_CASE, "travel angle of the moved mass's centre of mass (deg): at least the sled model's phi", Compared(true), RUNOUT_MD, "tests/runout.rs"),
     spec("runout/energy-slope-slip", SLOPE_CASE, "energy budget: |residual| / gravity work", Asserted(TOL_RUNOUT_ENERGY), RUNOUT_MD, "tests/runout.rs").with_reference(0.0),
     spec("runout/determinism", SLIDING_CASE, "1 and 2 threads: identical displacement, bit for bit", Compared(true), RUNOUT_MD, "tests/runout.rs"),
+    spec("runout/determinism-water", "block launched at 7 m/s on a level plane under 8 m of water, phi 30, 0.5 s", "1 and 2 threads: identical displacement, bit for bit, the water forces following the block", Compared(true), RUNOUT_MD, "tests/runout.rs"),
 ];

@@ -49,22 +49,17 @@ pub fn direct_shear(j: &BartonBandisJoint, sigma_n: f64, softening: Softening) -
 pub fn shear_rows() -> Vec<Check> {
     let j = reg::BB_SHEAR_JOINT;
     let ids = ["laws/bb-shear-peak-0.1mpa", "laws/bb-shear-peak-1mpa", "laws/bb-shear-peak-10mpa"];
-    let mut rows: Vec<Check> = ids
-        .iter()
-        .zip(reg::BB_SHEAR_STRESSES)
-        .map(|(id, s)| {
+    let mut rows: Vec<Check> = (0..3)
+        .map(|k| {
             let t0 = std::time::Instant::now();
-            let (_, plateau, _) = direct_shear(&j, s, Softening::Ductile);
-            reg::row(id).value(plateau, j.tau(s), t0.elapsed().as_secs_f64())
+            let (_, plateau, _) = direct_shear(&j, reg::BB_SHEAR_STRESSES[k], Softening::Ductile);
+            reg::row(ids[k]).value(plateau, reg::BB_SHEAR_PEAKS[k], t0.elapsed().as_secs_f64())
         })
         .collect();
     let t0 = std::time::Instant::now();
     let (_, after, status) = direct_shear(&j, 1e6, Softening::Brittle);
-    let mut row = reg::row("laws/bb-shear-residual-1mpa").value(
-        after,
-        1e6 * j.phi_r_deg.to_radians().tan(),
-        t0.elapsed().as_secs_f64(),
-    );
+    let mut row =
+        reg::row("laws/bb-shear-residual-1mpa").value(after, reg::BB_SHEAR_RESIDUAL_1MPA, t0.elapsed().as_secs_f64());
     if status != SpringStatus::Shear {
         row = row.with_defect(format!("the joint did not fail in shear: {status:?}"));
     }
@@ -74,12 +69,19 @@ pub fn shear_rows() -> Vec<Check> {
 
 /// The plane-failure cases: (case, closed form, row id).
 pub fn plane_cases() -> [(Case, f64, &'static str); 2] {
+    [
+        (reg::PLANE_BB, reg::BB_PLANE_FS_DRY, "laws/bb-plane-srm"),
+        (reg::PLANE_BB_WET, reg::BB_PLANE_FS_WET, "laws/bb-plane-wet-srm"),
+    ]
+}
+
+/// The registry's plane-failure closed form on the Barton-Bandis joint, dry
+/// and with the crack full (against [`reg::BB_PLANE_FS_DRY`] and
+/// [`reg::BB_PLANE_FS_WET`], the script's numbers).
+pub fn plane_closed_forms() -> [f64; 2] {
     let (gw, z) = (9810.0, PLANE_FAILURE_SET.crack_depth());
     let j = reg::BB_PLANE_JOINT;
-    [
-        (reg::PLANE_BB, reg::plane_failure_bb_fs(&PLANE_FAILURE_SET, &j, gw, 0.0), "laws/bb-plane-srm"),
-        (reg::PLANE_BB_WET, reg::plane_failure_bb_fs(&PLANE_FAILURE_SET, &j, gw, z), "laws/bb-plane-wet-srm"),
-    ]
+    [0.0, z].map(|z_w| reg::plane_failure_bb_fs(&PLANE_FAILURE_SET, &j, gw, z_w))
 }
 
 /// `cdem srm` on a plane-failure case and its row, failed by

@@ -11,6 +11,7 @@ pub mod extreme;
 pub mod fserror;
 pub mod joints;
 pub mod laws;
+pub mod lem_layers;
 pub mod lem_water;
 pub mod meshes;
 pub mod plastic;

@@ -462,19 +462,33 @@ pub fn slope_rows() -> Result<(SlopeRun, Vec<Check>), Error> {
 
 /// Row `runout/determinism`: the sliding block on 1 and on 2 threads.
 pub fn determinism_row() -> Result<Check, Error> {
+    let setup = Setup::new(reg::RUNOUT_DIP_DEG, 0.5);
+    same_on_one_and_two_threads("runout/determinism", &reg::RUNOUT_SLIDING, &setup, reg::RUNOUT_SLIDING_PHI_DEG)
+}
+
+/// Row `runout/determinism-water`: the launched block under the water table
+/// (its water forces follow it) for 0.5 s on one and on two threads.
+pub fn determinism_water_row() -> Result<Check, Error> {
+    let v0 = reg::RUNOUT_LAUNCH_SPEED;
+    let setup = Setup { v0: [v0, 0.0, 0.0], water_level: Some(reg::RUNOUT_WATER_LEVEL), ..Setup::new(0.0, 0.5) };
+    same_on_one_and_two_threads("runout/determinism-water", &reg::RUNOUT_LAUNCHED, &setup, reg::RUNOUT_LAUNCH_PHI_DEG)
+}
+
+/// Row `id`: `case` under `setup` run on one thread and on two, its
+/// displacement compared bit for bit.
+fn same_on_one_and_two_threads(id: &str, case: &Case, setup: &Setup, phi: f64) -> Result<Check, Error> {
     let t0 = std::time::Instant::now();
     let go = |threads: usize| -> Result<Vec<f64>, Error> {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
             .build()
             .map_err(|e| Error::io("rayon thread pool", std::io::Error::other(e.to_string())))?;
-        let setup = Setup::new(reg::RUNOUT_DIP_DEG, 0.5);
-        pool.install(|| run(&reg::RUNOUT_SLIDING, &setup, reg::RUNOUT_SLIDING_PHI_DEG)).map(|r| r.u)
+        pool.install(|| run(case, setup, phi)).map(|r| r.u)
     };
     let (one, two) = (go(1)?, go(2)?);
     let same = one.len() == two.len() && one.iter().zip(&two).all(|(a, b)| a.to_bits() == b.to_bits());
     let ours = if same { "identical" } else { "differ" };
-    Ok(reg::row("runout/determinism").compared(ours, "identical", same, t0.elapsed().as_secs_f64()))
+    Ok(reg::row(id).compared(ours, "identical", same, t0.elapsed().as_secs_f64()))
 }
 
 fn energy_row(id: &str, r: &BlockRun) -> Check {
@@ -502,5 +516,6 @@ pub fn rows() -> Result<Vec<Check>, Error> {
     out.push(objectivity_row()?.1);
     out.extend(slope_rows()?.1);
     out.push(determinism_row()?);
+    out.push(determinism_water_row()?);
     Ok(out)
 }
