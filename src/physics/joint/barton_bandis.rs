@@ -69,9 +69,7 @@ impl BartonBandisStrength {
         let roughness = (self.jrc * (self.jcs / sigma_n).log10()).max(0.0).to_radians();
         sigma_n * (self.phi_r + roughness).min(self.phi_max).tan() / self.factor
     }
-}
 
-impl BartonBandisStrength {
     /// A lower bound of `peak(sigma_n) / sigma_n` without a logarithm or a
     /// tangent (the cheap test that most springs above their residual pass):
     /// `tan(phi_r + R) >= tan(phi_r) + R` for angles below 90 degrees, the
